@@ -10,13 +10,13 @@ from typing import Callable, Iterable, Iterator, TextIO
 from . import native
 native.install()  # the compiled hot path, before any of its modules is imported
 
-from .arc_end import SPIRAL, TARGET_ARC_END
+from .geometry.arc_end import SPIRAL, TARGET_ARC_END
 from .lowering.feed_first import check_blocks
-from .control import GotoLabel
+from .interp.control import GotoLabel
 from .dialect import Dialect
 from .errors import Diagnostics, ErrorLevel, PostprocError, UsageError
 from .ir import Block
-from .jump_targets import jump_past_end, missing_fallthrough
+from .interp.jump_targets import jump_past_end, missing_fallthrough
 from .lowering.arcs import ArcOption, RewriteArcs, settle_arc_ends
 from .lowering.lower import lower_for
 from .plugins import Registry, default_registry
@@ -24,8 +24,8 @@ from .reading import gc_paused as gc_paused, read_blocks as read_blocks  # publi
 from .syntaxes.program import HIGHEST_SEQUENCE, RUN_CHECK, TARGET_OMITS_VACANT, ProgramSyntax
 from .lowering.sequences import Sequences
 from .setup.machine_setup import MachineSetup
-from .source_map import OutputMap
-from .syntax import Pipeline
+from .ir.source_map import OutputMap
+from .syntaxes.syntax import Pipeline
 from .context import Context
 from .frames.lowering import EVALUATE_KEY
 from .frames.parameters import frame_parameter_read

@@ -12,7 +12,7 @@ step (``postproc.lowering.feed_first``), which looks only at the blocks before t
   first construct on, ``translate`` leaves both checks to the run (``toolpath``, ``verify``).
 
 * An arc's end point lies on its circle (I/J/K form, within the reading controller's rule,
-  ``postproc.arc_end``, in the program's units), its R reaches the end point, and an R arc is no full circle (``arc_centre``): the simulator checks every arc; the reading
+  ``postproc.geometry.arc_end``, in the program's units), its R reaches the end point, and an R arc is no full circle (``arc_centre``): the simulator checks every arc; the reading
   pipeline's modal-state step checks every arc whose start it knows (``translate`` refuses it too).
 """
 
@@ -24,8 +24,8 @@ from mypy_extensions import mypyc_attr
 
 from .context import Context
 from .errors import ProgramError
-from .arc_end import NEUTRAL_ARC_END, ArcEndRule
-from .geometry import PLACES, centre_from_radius
+from .geometry.arc_end import NEUTRAL_ARC_END, ArcEndRule
+from .geometry.arcs import PLACES, centre_from_radius
 from .ir import Block
 
 NO_FEED = "a feed move with no feed rate (program F first)"

@@ -14,13 +14,13 @@ from typing import Any, Callable, Final, Mapping
 
 from mypy_extensions import mypyc_attr
 
-from .arc_end import NEUTRAL_ARC_END, ArcEndRule
+from .geometry.arc_end import NEUTRAL_ARC_END, ArcEndRule
 from .cycle_words import CycleWords
 from .errors import Diagnostics, Location
 from .ir import Block
 from .setup.machine_setup import MachineSetup
-from .source_map import locate
-from .state import ModalState
+from .ir.source_map import locate
+from .ir.state import ModalState
 
 
 NOT_SET: Any = object()
@@ -107,7 +107,7 @@ class Context:
         """The reading dialect's cutter compensation rules (``Dialect.CUTTER_RULES``; None: not modelled)."""
         self.arc_end: ArcEndRule = NEUTRAL_ARC_END
         """How far the reading controller lets an I/J/K arc end off its circle, and the path it then runs
-        (``Dialect.ARC_END``, ``postproc.arc_end``)."""
+        (``Dialect.ARC_END``, ``postproc.geometry.arc_end``)."""
         self.point_mix: Any = NOT_SET
         """A reading step's tracker of words written with and without a decimal point
         (``postproc.rs274.point_mix``): ``NOT_SET`` until it starts, None once it has nothing left to look

@@ -20,14 +20,15 @@ if TYPE_CHECKING:
 @hookimpl
 def postproc_register_xml(factory: XFactory) -> None:
     from . import cycles, patterns
-    from .control import register_control
-    from .synchronised_tap import RigidTap
-    from .expr import register_expressions
+    from .interp.control import register_control
+    from .lowering.synchronised_tap import RigidTap
+    from .ir.expr import register_expressions
     from .frames import register_frames
     from .ir import register_sections
-    from .lathe_sections import register_lathe_sections
+    from .ir.lathe_sections import register_lathe_sections
+    from .rs274 import cycle_semantics as cycle_semantics  # registers the family's hole-cycle rules by name (an IR file names them)
     from .setup.machine_setup import MachineSetup
-    from .syntax import Pipeline
+    from .syntaxes.syntax import Pipeline
     from .syntaxes.modal_state import ModalStateSyntax
     from .syntaxes.program import ProgramSyntax
     register_sections(factory)

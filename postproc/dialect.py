@@ -11,15 +11,15 @@ import abc
 from pathlib import Path
 from typing import TYPE_CHECKING, Callable, ClassVar, Generic, Iterable, Iterator, Mapping, Protocol, TypeVar, cast
 
-from .arc_end import NEUTRAL_ARC_END, ArcEndRule
-from .comments import CommentSyntax
+from .geometry.arc_end import NEUTRAL_ARC_END, ArcEndRule
+from .syntaxes.comments import CommentSyntax
 from .errors import Diagnostics
 from .output.line_format import LineRule
 from .ir import Block
 from .setup.machine_setup import MachineSetup
 from .context import Context
 from .cycle_words import CycleWords
-from .syntax import Pipeline, load_pipeline
+from .syntaxes.syntax import Pipeline, load_pipeline
 from .syntaxes.power_on_units import KEY as POWER_ON_UNITS
 from .output.writer_base import Writer as Writer
 
@@ -40,7 +40,7 @@ class Reader(abc.ABC):
 
     BLANKS: ClassVar[str] = ""
     """Characters outside ASCII that this reader reads as blanks (ISG: the no-break space of programs
-    copied from web pages). The line check (``postproc.lines``) lets them through; the reader says so."""
+    copied from web pages). The line check (``postproc.syntaxes.lines``) lets them through; the reader says so."""
 
     def __init__(self, ctx: Context) -> None:
         self.ctx = ctx
@@ -136,7 +136,7 @@ class Dialect:
     ``Cycles orientation`` otherwise)."""
     SYNCHRONISED_TAP: ClassVar[bool] = False
     """The controller writes a rigid tap as one spindle-synchronised move (LinuxCNC's G33.1,
-    ``postproc.synchronised_tap``): a rigid tap cycle of another family is written with it; without it such
+    ``postproc.lowering.synchronised_tap``): a rigid tap cycle of another family is written with it; without it such
     a tap is refused."""
     TAP_STROKES: ClassVar[bool] = False
     """The controller programs a rigid tap as two synchronised strokes, in and out with the spindle reversed
@@ -151,7 +151,7 @@ class Dialect:
     (``postproc.cycles.rigid_tap_lowering``); empty: none said."""
     RIGID_TAP_CODE: ClassVar[str] = ""
     """The machine code that makes the tap cycles after it rigid (Fanuc ``M29 S..``): a synchronised tap of
-    another family is written as that code and a tap cycle (``postproc.synchronised_tap``); '' for none."""
+    another family is written as that code and a tap cycle (``postproc.lowering.synchronised_tap``); '' for none."""
     DWELL_UNIT: ClassVar[str] = "seconds"
     """Unit of the dwell time the writer emits: "seconds" (a decimal number) or "milliseconds" (a whole
     number)."""
@@ -170,7 +170,7 @@ class Dialect:
     simulation; None: compensation is not simulated for this dialect (``verify`` compares the setting)."""
     ARC_END: ClassVar[ArcEndRule] = NEUTRAL_ARC_END
     """How far the controller lets an I/J/K arc's end point lie off the circle through its start, in the
-    program's units, and which path it then runs (``postproc.arc_end``): the reading pipeline and the
+    program's units, and which path it then runs (``postproc.geometry.arc_end``): the reading pipeline and the
     simulator judge each arc by the reading dialect's rule, ``verify`` a translation's by the target's."""
     R_ARC_FLOAT_SLACK: ClassVar[float] = 0.0
     """Where the controller refuses an R arc whose chord exceeds 2R by any amount, reckoned in its own
@@ -247,14 +247,14 @@ class Dialect:
     to the nearest whole one, as the controller rounds a computed S, and warns (``NumberWriter.speed``)."""
     STOPS_BEFORE_MOTION: ClassVar[bool] = False
     """The controller stops the spindle and the coolant before the block's motion (the RS274/NGC order
-    of execution), and its reader flags such stops ``before_motion`` (``postproc.event_order``). A
+    of execution), and its reader flags such stops ``before_motion`` (``postproc.ir.event_order``). A
     target that stops after the motion moves them ahead only when the source reads so."""
     FAMILY: ClassVar[str] = ""
     """The controller family whose machine-specific codes (``MachineFunction``: builders' M codes,
     machine G codes) this dialect writes verbatim; '' is a family of its own (the dialect's NAME)."""
     CYCLE_SEMANTICS: ClassVar[str] = ""
-    """How the controller moves through its native canned cycles ('fanuc' or 'rs274', see
-    ``postproc.cycles.semantics``): a cycle resolved under other rules is expanded for it. Each dialect
+    """How the controller moves through its native canned cycles: the name of rules a family base registered
+    (``postproc.cycles.semantics``; the RS274 family's 'fanuc' and 'rs274'): a cycle resolved under other rules is expanded for it. Each dialect
     with ``NATIVE_CYCLES`` names its own ('' where it has none: every cycle is expanded for it)."""
     PECK_CLEARANCE_MM: ClassVar[float | None] = None
     """The G73 retract and G83 re-approach clearance of the native peck cycles, mm, where the controller
@@ -298,7 +298,7 @@ class Dialect:
     """The reader takes lower-case addresses (``g1 x10``): the set-up's ``<Output case="lower">`` is
     refused otherwise."""
     COMMENTS: ClassVar[CommentSyntax] = CommentSyntax(parens=False)
-    """How the controller writes comments (``postproc.comments``): what text is safe inside one, and where
+    """How the controller writes comments (``postproc.syntaxes.comments``): what text is safe inside one, and where
     a line's comments are. The values a set-up template writes stand only inside a comment
     (``postproc.output.template_values``); the default knows no comment, so a dialect that declares none has
     every such value refused."""

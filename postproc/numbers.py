@@ -104,7 +104,7 @@ def format_decimal(value: float, places: int, leading_zero: bool = True, exact: 
 
 
 MAX_DIGITS: Final = 30
-"""The most digits of one number a program may hold (``postproc.lines`` refuses a longer one where it reads
+"""The most digits of one number a program may hold (``postproc.syntaxes.lines`` refuses a longer one where it reads
 it): more than any controller's registers hold. ``format_decimal`` refuses to write a longer one, so no
 writer writes a number its own reader (or its controller) refuses."""
 

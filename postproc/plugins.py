@@ -15,12 +15,12 @@ from . import native
 native.install()  # the compiled hot path, before any of its modules is imported
 
 from . import hookspecs
-from .control import register_control
+from .interp.control import register_control
 from .dialect import Dialect
 from .entry_points import entry_points as installed_entry_points
 from .entry_points import load as load_entry_point
 from .errors import UsageError
-from .expr import register_expressions
+from .ir.expr import register_expressions
 from .ir import register_sections
 from .lowering.lower import Lowering, register_transform
 from .setup.machine_setup import SetupGroup, builtin_groups

@@ -16,9 +16,9 @@ from .context import Context
 from .dialect import Dialect
 from .errors import Diagnostics, Location, UsageError
 from .ir import Block
-from .lines import checked_lines
+from .syntaxes.lines import checked_lines
 from .setup.machine_setup import MachineSetup
-from .syntax import Pipeline
+from .syntaxes.syntax import Pipeline
 
 
 @contextlib.contextmanager

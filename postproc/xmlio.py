@@ -294,7 +294,7 @@ def computed_value(el: etree._Element, name: str) -> Any:
 
 
 _computed_reader: Callable[[etree._Element], Any] | None = None
-"""Reads the expression inside ``<Value>``: registered by ``postproc.expr`` (the expressions know this
+"""Reads the expression inside ``<Value>``: registered by ``postproc.ir.expr`` (the expressions know this
 module, not the other way round)."""
 
 

@@ -1,4 +1,4 @@
-"""Each controller's rule for an I/J/K arc whose end lies off its circle (``postproc.arc_end``,
+"""Each controller's rule for an I/J/K arc whose end lies off its circle (``postproc.geometry.arc_end``,
 ``Dialect.ARC_END``): judged in the program's units, by the reading dialect, and run as that controller
 runs it. Expected values: LinuxCNC's interpreter itself (a seeded random differential around its limit),
 grbl's ``gcode.c`` thresholds and Fanuc's parameter 3410 worked by hand, SINUMERIK's corrected centre
@@ -16,7 +16,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from postproc.api import translate
-from postproc.arc_end import START_RADIUS, ArcEndRule
+from postproc.geometry.arc_end import START_RADIUS, ArcEndRule
 from postproc.lowering.arcs import parse_arc_option
 from postproc.errors import ErrorList
 from postproc.simulate.toolpath import toolpath_events
@@ -338,7 +338,7 @@ def test_the_circle_about_a_moved_centre_stays_within_its_bound_of_the_spiral() 
     """For seeded arcs of every sweep: ``centre_move`` is the distance to the centre ``centre`` returns; the
     spiral about the programmed centre, sampled densely here, lies within ``spiral_gap`` (to its sampling)
     and within |r1 - r0| + 2 * ``centre_move`` (the triangle inequality) of the circle each moving rule runs."""
-    from postproc.arc_end import NEAREST_CENTRE
+    from postproc.geometry.arc_end import NEAREST_CENTRE
     rnd = random.Random(26)
     for runs in (NEAREST_CENTRE, START_RADIUS):
         rule = ArcEndRule(metric=1.0, inch=1.0, runs=runs)

@@ -1,4 +1,4 @@
-"""The largest distance between two arc paths (``postproc.arc_paths``), which ``verify`` compares arcs by: against
+"""The largest distance between two arc paths (``postproc.geometry.arc_paths``), which ``verify`` compares arcs by: against
 distances known by construction (a radius changed, a path moved or turned about its centre), against an
 independent brute-force search (points of one path densely sampled, their distance from the other a minimum
 over its densely sampled points), and through ``verify`` itself (an arc against its chords)."""
@@ -12,7 +12,7 @@ from typing import Any
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from postproc.arc_paths import ArcPath, deviation
+from postproc.geometry.arc_paths import ArcPath, deviation
 from postproc.simulate.compare import compare
 
 _RADIUS = st.floats(0.5, 500.0)
@@ -68,7 +68,7 @@ def test_a_path_turned_about_its_centre_is_apart_by_its_ends(r: float, a0: float
 def _brute(a: ArcPath, b: ArcPath, n: int = 300) -> float:
     """The Hausdorff distance of the two paths by brute force: each path sampled at n + 1 points, each point's
     distance from the other the least over that one's points, refined about the nearest (independent of
-    ``postproc.arc_paths``: no ray, no model)."""
+    ``postproc.geometry.arc_paths``: no ray, no model)."""
     def point(p: ArcPath, t: float) -> tuple[float, float, float]:
         x, y, off = p.at(t)
         return x, y, off[0]

@@ -87,7 +87,7 @@ def test_a_program_that_computes_leaves_the_feed_order_to_the_run() -> None:
     """A subroutine defined before the main program feeds at its caller's F: from the first construct on,
     the text's order is not the run's, and the step does not judge it (the run does)."""
     from postproc.context import Context
-    from postproc.control import SubEnd, SubStart
+    from postproc.interp.control import SubEnd, SubStart
     from postproc.dialect import Dialect
     from postproc.errors import Diagnostics
     from postproc.ir import Block, Feed, Motion

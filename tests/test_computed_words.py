@@ -4,7 +4,7 @@ can spell it, else the program is flattened and the value evaluated, else a loca
 
 The compiled build checks a section's field types at run time (docs/compiled.md): ``H#1`` in a
 ``ToolLengthOffset.register`` typed ``int`` was a ``TypeError`` there ("int or None object expected;
-got postproc.expr.Var") for every target. ``tests/support/section_types.py`` makes the pure build see it.
+got postproc.ir.expr.Var") for every target. ``tests/support/section_types.py`` makes the pure build see it.
 """
 
 from __future__ import annotations
@@ -15,7 +15,7 @@ import io
 import pytest
 
 from postproc.api import read_program, translate
-from postproc.cycles.semantics import FANUC, RS274
+from postproc.rs274.cycle_semantics import FANUC, RS274
 from postproc.errors import Diagnostics, ErrorList
 from postproc.ir import Block
 from postproc.simulate.toolpath import toolpath_events

@@ -1,4 +1,4 @@
-"""``postproc.conditions``: the negation a jump needs holds exactly when the condition does not, and a
+"""``postproc.interp.conditions``: the negation a jump needs holds exactly when the condition does not, and a
 condition given an operator holds exactly when it did (checked by evaluating both on random values,
 ties included: the comparisons are exact)."""
 
@@ -7,9 +7,9 @@ from __future__ import annotations
 from hypothesis import given
 from hypothesis import strategies as st
 
-from postproc.conditions import negated, truth
-from postproc.evaluation import MappingEnv, evaluate
-from postproc.expr import Binary, Expr, Num, Unary, Vacancy, Var
+from postproc.interp.conditions import negated, truth
+from postproc.interp.evaluation import MappingEnv, evaluate
+from postproc.ir.expr import Binary, Expr, Num, Unary, Vacancy, Var
 
 _VALUES = st.sampled_from([-2.0, -0.5, 0.0, 0.5, 1.0, 2.0, 3.0])
 """Few values, so that ties (where a flipped comparison would be wrong) come up often."""
@@ -30,7 +30,7 @@ def _cond(depth: int = 0) -> st.SearchStrategy[Expr]:
 
 
 def _holds(cond: Expr, a: float, b: float) -> bool:
-    value = evaluate(cond, MappingEnv({1: a, 2: b}, Vacancy.FANUC))
+    value = evaluate(cond, MappingEnv({1: a, 2: b}, Vacancy.NULL))
     return value is not None and value != 0.0
 
 

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import pytest
 
-from postproc.control import ASSIGN, CONTROL, Assign, Call, Goto, While, register_control
+from postproc.interp.control import ASSIGN, CONTROL, Assign, Call, Goto, While, register_control
 from postproc.errors import ConfigError
-from postproc.expr import Num, Var, register_expressions
+from postproc.ir.expr import Num, Var, register_expressions
 from postproc.ir import Block
 from postproc.xmlio import XFactory, parse_xml_bytes
 

@@ -17,7 +17,7 @@ from postproc.cycles.resolve import EXPANSIONS
 from postproc.cycles.section import CannedCycle
 from postproc.errors import ProgramError
 from postproc.ir import Motion, Section
-from postproc.state import PLANE_AXES
+from postproc.ir.state import PLANE_AXES
 
 KINDS = sorted({(kind, cls) for cls in EXPANSIONS for kind in cls.KINDS}, key=lambda pair: pair[0])
 coordinate = st.floats(-50.0, 50.0, allow_nan=False).map(lambda v: round(v, 3))

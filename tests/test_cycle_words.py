@@ -17,7 +17,7 @@ from postproc.cycles import CannedCycleResolveSyntax
 from postproc.errors import Diagnostics, ErrorLevel, PostprocError
 from postproc.ir import Block
 from postproc.setup.machine_setup import InputSettings, MachineSetup
-from postproc.syntax import Pipeline, Syntax
+from postproc.syntaxes.syntax import Pipeline, Syntax
 from postproc.syntaxes.modal_state import ModalStateSyntax
 
 LEVEL_Z_DEPTH_I = CycleWords(names={"drill": "G81", "peck_deep": "G83"}, return_to_r="G99", level="Z",

@@ -18,7 +18,7 @@ from postproc.ir import Block, Dwell, Motion, ProgramControl, Section, SpindleCo
 from postproc.plugins import default_registry
 from postproc.setup.machine_setup import CycleSettings, InputSettings, MachineSetup
 from postproc.context import Context
-from postproc.syntax import Pipeline
+from postproc.syntaxes.syntax import Pipeline
 from postproc.syntaxes.modal_state import ModalStateSyntax
 
 from support import rs274

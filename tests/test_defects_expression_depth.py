@@ -2,7 +2,7 @@
 (brackets and signs are counted, a chain is built in a loop) and then exhausted Python's stack where the
 expression is folded, evaluated or written: "internal error: RecursionError", no location, in every dialect
 with expressions. Each operator of a chain is now one level, and a reader refuses an expression deeper than
-the 200 levels the XML reader takes (``postproc.expr.nests_deeper``), at the expression's first character.
+the 200 levels the XML reader takes (``postproc.ir.expr.nests_deeper``), at the expression's first character.
 """
 
 from __future__ import annotations

@@ -8,16 +8,16 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from postproc.evaluation import MappingEnv, TOLERANCE_EQUAL, certain_failure, describe, evaluate_number, var_key
-from postproc.evaluation import evaluate
-from postproc.expr import (
+from postproc.interp.evaluation import MappingEnv, TOLERANCE_EQUAL, certain_failure, describe, evaluate_number, var_key
+from postproc.interp.evaluation import evaluate
+from postproc.ir.expr import (
     BINARY_OPS, FUNCTIONS, Binary, EvalError, Expr, Func, Num, Unary, Vacancy, Var,
 )
 from postproc.rs274.expressions import FANUC_SPELLING, LINUXCNC_SPELLING
 from tests.test_rs274_expressions import trees
 
-FANUC = MappingEnv({1: 3.0, 2: -2.0, 3: 0.0, 4: 25.0}, Vacancy.FANUC)
-LCNC = MappingEnv({1: 3.0, 2: -2.0, "depth": 4.0}, Vacancy.LINUXCNC)
+FANUC = MappingEnv({1: 3.0, 2: -2.0, 3: 0.0, 4: 25.0}, Vacancy.NULL)
+LCNC = MappingEnv({1: 3.0, 2: -2.0, "depth": 4.0}, Vacancy.ZERO)
 
 
 def n(v: float) -> Num:
@@ -152,7 +152,7 @@ def test_var_key() -> None:
 
 
 def test_round_address_follows_the_increment() -> None:
-    inch = MappingEnv({}, Vacancy.FANUC, increment=0.0001)
+    inch = MappingEnv({}, Vacancy.NULL, increment=0.0001)
     assert evaluate(f("round_address", 1.00333), inch) == pytest.approx(1.0033)
 
 
@@ -194,7 +194,7 @@ def test_what_is_certain_to_fail_fails_with_any_variables(expr: Expr, values: li
     """Sound: an expression refused as certain to fail raises whatever the variables hold (vacant ones
     included); complete on constants: an expression with no variable is refused exactly when it fails."""
     err = certain_failure(expr)
-    for vacancy in (Vacancy.FANUC, Vacancy.LINUXCNC):
+    for vacancy in (Vacancy.NULL, Vacancy.ZERO):
         try:
             evaluate(expr, _env(values, vacancy))
             failed = False
@@ -212,7 +212,7 @@ def test_constants_fail_exactly_when_refused_in_linuxcnc_spelling(expr: Expr) ->
     if _reads_variables(expr):
         return
     try:
-        evaluate(expr, MappingEnv({}, Vacancy.LINUXCNC))
+        evaluate(expr, MappingEnv({}, Vacancy.ZERO))
         failed = False
     except EvalError:
         failed = True

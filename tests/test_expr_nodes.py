@@ -6,7 +6,7 @@ import pytest
 from lxml import etree
 
 from postproc.errors import ConfigError
-from postproc.expr import Binary, Func, Num, Unary, Var, expr_from_xml, register_expressions
+from postproc.ir.expr import Binary, Func, Num, Unary, Var, expr_from_xml, register_expressions
 from postproc.xmlio import XFactory, parse_xml_bytes
 
 TREES = [

@@ -17,7 +17,7 @@ from hypothesis import strategies as st
 
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList
-from postproc.expr import Binary, Expr, Func, Num, Unary, Var
+from postproc.ir.expr import Binary, Expr, Func, Num, Unary, Var
 from postproc.isg_family.expressions import BINARY, FUNCTIONS, P_BASE, spell_expr, spell_word_value
 from postproc.setup.machine_setup import CycleSettings, MachineSetup
 from postproc.simulate.toolpath import toolpath_events

@@ -76,7 +76,7 @@ def test_a_percent_with_text_elsewhere_stays_an_error(program, col):
 _TITLE = st.builds(str.__add__, st.sampled_from(["", "O1200", " O0001 ", "1"]),
                    st.text(st.sampled_from([c for c in string.printable if c not in string.digits + "\r\n\x0b\x0c"]),
                            max_size=30))
-"""ASCII (a program is, outside comments: ``postproc.lines.line_problem``) with short numbers."""
+"""ASCII (a program is, outside comments: ``postproc.syntaxes.lines.line_problem``) with short numbers."""
 
 
 @FUZZ

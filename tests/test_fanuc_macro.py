@@ -16,9 +16,9 @@ from hypothesis import HealthCheck, assume, given, settings
 
 from postproc.api import read_program, translate
 from postproc.context import Context
-from postproc.control import Assign, Call, EndWhile, Goto, ModalCall, ModalCallCancel, Return, While
+from postproc.interp.control import Assign, Call, EndWhile, Goto, ModalCall, ModalCallCancel, Return, While
 from postproc.errors import Diagnostics, ErrorLevel, ErrorList, UnsupportedError
-from postproc.expr import Binary, Expr, Num, Unary, Var
+from postproc.ir.expr import Binary, Expr, Num, Unary, Var
 from postproc.plugins import default_registry
 from postproc.commands.program_xml import dump_program, load_program
 from postproc.rs274.expressions import FANUC_SPELLING, spell_word_value

@@ -11,7 +11,7 @@ import pytest
 from postproc.errors import ConfigError, ErrorList, ProgramError
 from postproc.setup.machine_setup import load_setup
 from postproc.commands.export import write_jsonl
-from postproc.geometry import MAX_ARC_POINTS, arc_points, centre_from_radius
+from postproc.geometry.arcs import MAX_ARC_POINTS, arc_points, centre_from_radius
 from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
 
@@ -37,7 +37,7 @@ def test_setup_floats_must_be_finite(tmp_path: Path, element: str, value: str) -
 def test_a_coordinate_beyond_the_float_range_cannot_be_simulated() -> None:
     with pytest.raises(ErrorList) as exc:
         list(toolpath_events(io.StringIO(f"G21 G90\nG0 X{BEYOND}\n"), file="big.nc", dialect="fanuc"))
-    # refused before it is read: no number of more than 30 digits reaches the simulator (postproc.lines)
+    # refused before it is read: no number of more than 30 digits reaches the simulator (postproc.syntaxes.lines)
     assert [str(e) for e in exc.value.errors] == [
         "big.nc:2:5: error: a number with more than 30 digits cannot be read"]
 

@@ -25,7 +25,7 @@ from postproc.cycles.turning.profile import Seg
 from postproc.rs274.cutter_rules import HAAS_T
 from postproc.errors import ErrorList, ProgramError
 from postproc.ir import CompoundMotion, CutterCompensation, Motion
-from postproc.lathe_sections import LatheCycle
+from postproc.ir.lathe_sections import LatheCycle
 from postproc.setup.machine_setup import load_setup
 from postproc.simulate.verify import verify_lines
 from tests.support.nose_tips import controlled, direction

@@ -12,17 +12,17 @@ from typing import Any, Iterable, Iterator
 
 import pytest
 
-from postproc.control import (
+from postproc.interp.control import (
     Assign, Break, Call, Continue, EndIf, EndWhile, Goto, If, IfThen, ModalCall, ModalCallCancel, Return,
     SubEnd, SubStart, While,
 )
 from postproc.errors import Diagnostics, ErrorList, ErrorLevel
-from postproc.expr import Binary, Expr, Func, Num, Var
+from postproc.ir.expr import Binary, Expr, Func, Num, Var
 from postproc.syntaxes.program import ProgramSyntax
 from postproc.rs274.variables import MacroBVariables, NgcVariables
 from postproc.ir import Block, ProgramStart, Sequence
 from postproc.setup.machine_setup import Limits, MachineSetup
-from postproc.source_map import ExecutedBlock
+from postproc.ir.source_map import ExecutedBlock
 from postproc.context import Context
 from postproc.plugins import default_registry
 

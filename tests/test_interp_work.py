@@ -15,9 +15,9 @@ import io
 import pytest
 
 from postproc.api import translate
-from postproc.control import EndWhile, While
+from postproc.interp.control import EndWhile, While
 from postproc.errors import Diagnostics, ErrorList
-from postproc.expr import Binary, Num, Var
+from postproc.ir.expr import Binary, Num, Var
 from postproc.setup.machine_setup import Limits, MachineSetup
 from postproc.simulate.toolpath import toolpath_events
 from tests.test_interp import P, error_of, run, v, words

@@ -15,7 +15,7 @@ import pytest
 
 from postproc.compensation.dynamic import DynamicCutterCompensation
 from postproc.api import read_program
-from postproc.expr import Binary, Func, Num, Unary, Var
+from postproc.ir.expr import Binary, Func, Num, Unary, Var
 from postproc.errors import ConfigError
 from postproc.ir import (
     Block, BlockDelete, Comments, CompoundMotion, Coolant, CutterCompensation, CycleCall, CycleCancel,
@@ -88,12 +88,12 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
          '  <Values R="-1.5"/>\n</DataSetting>')],
     "FrameChange": [
         (lambda c: __import__("postproc.frames", fromlist=["FrameChange"]).FrameChange(
-            "rotate", {"X": 10.0, "Y": -2.5, "R": 30.0}, "fanuc", "fanuc", "G68 X10. Y-2.5 R30."),
-         '<FrameChange kind="rotate" rules="fanuc" family="fanuc" text="G68 X10. Y-2.5 R30.">\n'
+            "rotate", {"X": 10.0, "Y": -2.5, "R": 30.0}, "layered", "fanuc", "G68 X10. Y-2.5 R30."),
+         '<FrameChange kind="rotate" rules="layered" family="fanuc" text="G68 X10. Y-2.5 R30.">\n'
          '  <Words X="10.0" Y="-2.5" R="30.0"/>\n</FrameChange>'),
         (lambda c: __import__("postproc.frames", fromlist=["FrameChange"]).FrameChange(
-            "origin", {"X": Var(Num(1.0))}, "rs274", "linuxcnc", "G92 X#1"),
-         '<FrameChange kind="origin" rules="rs274" family="linuxcnc" text="G92 X#1">\n'
+            "origin", {"X": Var(Num(1.0))}, "shared_offset", "linuxcnc", "G92 X#1"),
+         '<FrameChange kind="origin" rules="shared_offset" family="linuxcnc" text="G92 X#1">\n'
          '  <Words>\n    <Value of="X">\n      <Var>\n        <Num value="1.0"/>\n      </Var>\n    </Value>\n  </Words>\n</FrameChange>')],
     "Generated": [
         (lambda c: __import__("postproc.lowering.sequences", fromlist=["GeneratedText"]).GeneratedText("(LOAD T1)", "tool_change"),

@@ -14,7 +14,7 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList
-from postproc.expr import Binary, Func, Num, Var
+from postproc.ir.expr import Binary, Func, Num, Var
 from postproc.isg_family.expressions import spell_expr
 from postproc.setup.machine_setup import MachineSetup, OutputSettings
 from postproc.simulate.toolpath import toolpath_events

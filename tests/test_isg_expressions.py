@@ -7,15 +7,15 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from postproc.errors import UnsupportedError
-from postproc.evaluation import MappingEnv, evaluate
-from postproc.expr import Binary, Expr, Func, Num, Unary, Vacancy, Var
+from postproc.interp.evaluation import MappingEnv, evaluate
+from postproc.ir.expr import Binary, Expr, Func, Num, Unary, Vacancy, Var
 from postproc.rs274.expressions import ExprSyntaxError
 
 from postproc.isg_family.expressions import BINARY, FUNCTIONS, P_BASE, parse_expr, spell_expr, spell_word_value, \
     parse_word_value
 
 P = {P_BASE + n: float(n) for n in range(1, 10)}  # P1 = 1, ..., P9 = 9
-ENV = MappingEnv(dict(P), Vacancy.FANUC)  # as the default was: ISG reads no vacant value (isg/variables.py)
+ENV = MappingEnv(dict(P), Vacancy.NULL)  # as the default was: ISG reads no vacant value (isg/variables.py)
 
 
 @pytest.mark.parametrize("text, value", [

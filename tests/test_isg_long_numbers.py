@@ -1,6 +1,6 @@
 """A computed number too long for any reader (fuzz seed 75822164089876486443380238660552028264, macros -> isg):
 ``G91 G1 X[EXP[#3]]`` with a large #3 was written as a 40-digit X, which the ISG reader then refused ("a
-number with more than 30 digits", ``postproc.lines``). The writer now refuses it at its source line.
+number with more than 30 digits", ``postproc.syntaxes.lines``). The writer now refuses it at its source line.
 
 The ISG manual's own limit is far lower: numerical inputs within -214 000.0000 mm .. +214 000.0000 mm [K:
 Beckhoff TF5200 programming manual, "Measuring systems, input and precision ranges"]; that limit is not
@@ -16,7 +16,7 @@ import pytest
 from postproc.api import read_program, translate
 from postproc.errors import ErrorList, ProgramError
 from postproc.numbers import MAX_DIGITS, format_decimal
-from postproc.lines import MAX_DIGITS as READ_DIGITS
+from postproc.syntaxes.lines import MAX_DIGITS as READ_DIGITS
 
 PROGRAM = "G21 G90 G0 X0 Y0 Z5.\n#3=92.\nG91 G1 X[EXP[#3]] F100.\nG90\nM30\n"
 

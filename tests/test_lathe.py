@@ -15,7 +15,7 @@ import pytest
 from postproc.api import read_program, translate
 from postproc.errors import ErrorList
 from postproc.ir import Block
-from postproc.lathe_sections import LatheCycle
+from postproc.ir.lathe_sections import LatheCycle
 from postproc.setup.machine_setup import InputSettings, LatheCycleSettings, MachineSettings, MachineSetup
 from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines

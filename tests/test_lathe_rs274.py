@@ -13,7 +13,7 @@ seeded random differentials, ``SEEDS`` programs each (``POSTPROC_LATHE_DIFFERENT
 Compared per move: end points and arc centres as radii (ours are diameters, ``x_mode``), the feed of a
 feed move (mm/rev or mm/min as programmed), and a thread move's lead: ours along its major axis (F, or
 ``ThreadLead``), rs274's ``START_SPEED_FEED_SYNC`` along the path, converted with the move's own geometry
-(``postproc.thread_lead``). The done-when programs (the bundled Fanuc T and GSK examples) go the same way.
+(``postproc.geometry.thread_lead``). The done-when programs (the bundled Fanuc T and GSK examples) go the same way.
 """
 
 from __future__ import annotations
@@ -31,7 +31,7 @@ from postproc.api import translate
 from postproc.setup.machine_setup import MachineSetup
 from postproc.setup.machine_setup import load_setup
 from postproc.simulate.toolpath import toolpath_events
-from postproc.thread_lead import lead_along_major
+from postproc.geometry.thread_lead import lead_along_major
 from tests.support.rs274 import available, canonical_moves, run_rs274
 
 pytestmark = pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")

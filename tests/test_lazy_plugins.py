@@ -101,7 +101,7 @@ def test_every_shipped_dialect_reads_and_writes_through_its_lazy_classes(name: s
 REGISTRY_PROBE = """
 import json, sys
 from postproc.plugins import default_registry
-from postproc.syntax import load_pipeline
+from postproc.syntaxes.syntax import load_pipeline
 registry = default_registry()
 before = sorted(m for m in sys.modules if m.startswith(("dialects.", "postproc_")))
 names = registry.factory.names()
@@ -135,7 +135,7 @@ def test_every_name_is_registered_and_imported_when_a_file_uses_it(tmp_path: Pat
 
 def test_an_unknown_element_is_still_a_located_error(tmp_path: Path) -> None:
     from postproc.errors import ConfigError
-    from postproc.syntax import load_pipeline
+    from postproc.syntaxes.syntax import load_pipeline
     path = tmp_path / "p.xml"
     path.write_text('<Pipeline dialect="fagor">\n  <FagorBlockSyntax/>\n  <FagorBlockSyntaks/>\n</Pipeline>\n')
     with pytest.raises(ConfigError) as info:

@@ -1,4 +1,4 @@
-"""The line check every reader's lines pass (``postproc.lines``): non-ASCII outside comments, over-long
+"""The line check every reader's lines pass (``postproc.syntaxes.lines``): non-ASCII outside comments, over-long
 lines and numbers of more than 30 digits are located errors, for every readable dialect; comments keep
 any character."""
 
@@ -145,8 +145,8 @@ def test_a_line_of_50_mb_is_counted_in_pieces_and_reading_goes_on():
 
 
 def test_an_endless_line_ends_the_reading(monkeypatch):
-    import postproc.lines
-    monkeypatch.setattr(postproc.lines, "MAX_SKIPPED", 1 << 20)
+    import postproc.syntaxes.lines
+    monkeypatch.setattr(postproc.syntaxes.lines, "MAX_SKIPPED", 1 << 20)
     errors = _stream_errors(_Endless("G21 G90\n", "\0", None, ""))
     assert len(errors) == 1 and errors[0].startswith("p.nc:2:65537: error: the line is more than ")
     assert errors[0].endswith(" characters long, more than the limit of 65536 (the set-up's <Limits lineLength>): "
@@ -165,17 +165,17 @@ TEXT = st.lists(st.tuples(st.text(alphabet="GX1. ", max_size=30), st.sampled_fro
 def test_lines_read_in_pieces_are_the_lines_read_whole(text, tail, limit, piece):
     # the same lines and the same errors whether a stream is read in pieces (of PIECE characters, or of
     # the limit and an end of line) or each line whole, CR LF cut between its characters included
-    import postproc.lines
+    import postproc.syntaxes.lines
     from postproc.context import Context
     from postproc.errors import Diagnostics, ErrorLevel
     program = text + tail
     got = []
     with pytest.MonkeyPatch.context() as patch:
-        patch.setattr(postproc.lines, "PIECE", piece)
+        patch.setattr(postproc.syntaxes.lines, "PIECE", piece)
         for source in (io.StringIO(program, newline=""), list(io.StringIO(program, newline=""))):
             ctx = Context("p.nc", MachineSetup(limits=Limits(line_length=limit)), Diagnostics(ErrorLevel.WARN,
                           warn_stream=io.StringIO()), "fanuc")
-            lines = list(postproc.lines.checked_lines(source, ctx))
+            lines = list(postproc.syntaxes.lines.checked_lines(source, ctx))
             got.append((lines, [str(w) for w in ctx.diagnostics.warnings]))
     assert got[0] == got[1]
 
@@ -216,7 +216,7 @@ def test_a_plus_sign_keeps_the_program_as_written_and_writes_the_code_elsewhere(
 
 
 class _ReadlineOnly(io.TextIOBase):
-    """A stream read only by ``readline`` (the pieces ``postproc.lines.pieces`` takes, line by line)."""
+    """A stream read only by ``readline`` (the pieces ``postproc.syntaxes.lines.pieces`` takes, line by line)."""
 
     def __init__(self, stream: io.StringIO) -> None:
         self.stream = stream
@@ -239,32 +239,32 @@ def test_a_stream_read_many_lines_at_once_gives_the_lines_and_errors_read_line_b
     # them itself (``_read_chunks``): the lines and errors are those of the same stream read a line at a
     # time, whatever the line ends, line lengths, other separators ``str.splitlines`` knows, non-ASCII
     # characters and long numbers, with a read ending anywhere (pieces of 4 or 7 characters)
-    import postproc.lines
+    import postproc.syntaxes.lines
     from postproc.context import Context
     from postproc.errors import Diagnostics, ErrorLevel
     program = ("\ufeff" if bom else "") + text + tail
     got = []
     with pytest.MonkeyPatch.context() as patch:
-        patch.setattr(postproc.lines, "PIECE", piece)
+        patch.setattr(postproc.syntaxes.lines, "PIECE", piece)
         for source in (io.StringIO(program, newline=newline), _ReadlineOnly(io.StringIO(program, newline=newline)),
                        list(io.StringIO(program, newline=newline))):
             ctx = Context("p.nc", MachineSetup(limits=Limits(line_length=limit)), Diagnostics(ErrorLevel.WARN,
                           warn_stream=io.StringIO()), "fanuc")
-            lines = list(postproc.lines.checked_lines(source, ctx))
+            lines = list(postproc.syntaxes.lines.checked_lines(source, ctx))
             got.append((lines, [str(w) for w in ctx.diagnostics.warnings]))
     assert got[0] == got[1] == got[2]
 
 
 def test_a_stream_that_splits_only_at_lf_is_read_line_by_line() -> None:
     # a stream opened with newline="\n" keeps a lone CR inside its line: read as it splits
-    import postproc.lines
+    import postproc.syntaxes.lines
     from postproc.context import Context
     from postproc.errors import Diagnostics
     ctx = Context("p.nc", MachineSetup(), Diagnostics(), "fanuc")
-    assert list(postproc.lines.checked_lines(io.StringIO("G0 X1.\rG1 X2.\nM30\n"), ctx)) == ["G0 X1.\rG1 X2.\n",
+    assert list(postproc.syntaxes.lines.checked_lines(io.StringIO("G0 X1.\rG1 X2.\nM30\n"), ctx)) == ["G0 X1.\rG1 X2.\n",
                                                                                              "M30\n"]
     ctx = Context("p.nc", MachineSetup(), Diagnostics(), "fanuc")
-    assert list(postproc.lines.checked_lines(io.StringIO("G0 X1.\rG1 X2.\nM30\n", newline=""), ctx)) == [
+    assert list(postproc.syntaxes.lines.checked_lines(io.StringIO("G0 X1.\rG1 X2.\nM30\n", newline=""), ctx)) == [
         "G0 X1.\r", "G1 X2.\n", "M30\n"]
 
 
@@ -272,13 +272,13 @@ def test_a_stream_that_splits_only_at_lf_is_read_line_by_line() -> None:
 def test_a_byte_order_mark_does_not_count_in_the_line_length(wrap) -> None:
     # a line of 4 characters after the mark is within a limit of 4 whichever way it is read (it was refused
     # as "4 characters long, more than the limit of 4" where its piece was as long as a cut one)
-    import postproc.lines
+    import postproc.syntaxes.lines
     from postproc.context import Context
     from postproc.errors import Diagnostics, ErrorLevel
     for program in ("\ufeffG1X.\rG1\n", "\ufeffG1X.\r\nG1\n", "\ufeffG1X1.\rG1\n"):
         ctx = Context("p.nc", MachineSetup(limits=Limits(line_length=4)), Diagnostics(ErrorLevel.WARN,
                       warn_stream=io.StringIO()), "fanuc")
-        lines = list(postproc.lines.checked_lines(wrap(io.StringIO(program, newline="")), ctx))
+        lines = list(postproc.syntaxes.lines.checked_lines(wrap(io.StringIO(program, newline="")), ctx))
         errors = [str(w) for w in ctx.diagnostics.warnings]
         if "X1." in program:  # 5 characters: too long, counted without the mark
             assert errors == ["p.nc:1:6: warning: the line is 5 characters long, more than the limit of 4 (the "

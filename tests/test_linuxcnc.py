@@ -18,7 +18,7 @@ from postproc.errors import Diagnostics, ErrorList, ErrorLevel
 from postproc.ir import Block, Dwell, Motion, SpindleOrientation, ToolLengthOffset
 from postproc.plugins import default_registry
 from postproc.setup.machine_setup import CycleSettings, MachineSetup
-from postproc.syntax import load_pipeline
+from postproc.syntaxes.syntax import load_pipeline
 from postproc.simulate.toolpath import toolpath_events
 from postproc.xmlio import to_bytes
 import postproc_linuxcnc

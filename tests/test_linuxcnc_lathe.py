@@ -2,7 +2,7 @@
 
 Expected texts are derived by hand from the rules in ``postproc_linuxcnc.lathe`` / ``lathe_writer`` (each
 checked with rs274 2.9): the mode line ``G18 G7``, ``G96 S.. D..`` carrying the Fanuc-family clamp, a thread
-as ``G33 .. K..`` with its F on a line before it, K along the path (``postproc.thread_lead``). The done-when
+as ``G33 .. K..`` with its F on a line before it, K along the path (``postproc.geometry.thread_lead``). The done-when
 programs (the bundled Fanuc T and GSK examples, and the seed's GSK G71/G70) verify at zero deviation and
 run in rs274 with the same moves as their source.
 """
@@ -19,7 +19,7 @@ import pytest
 from postproc.api import translate
 from postproc.errors import ErrorList
 from postproc.ir import NativeCode
-from postproc.lathe_sections import SpindleClamp, SpindleMode, ThreadLead
+from postproc.ir.lathe_sections import SpindleClamp, SpindleMode, ThreadLead
 from postproc.setup.machine_setup import InputSettings, MachineSetup, load_setup
 from postproc.simulate.verify import verify_lines
 from postproc.api import read_program

@@ -29,7 +29,7 @@ import pytest
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList
 from postproc.ir import Block
-from postproc.lathe_sections import XProgramming
+from postproc.ir.lathe_sections import XProgramming
 from postproc.reading import read_blocks
 from postproc.plugins import default_registry
 from postproc.setup.machine_setup import MachineSetup, load_setup

@@ -1,7 +1,7 @@
 """LinuxCNC's trigonometry at exact angles: rs274 scales degrees with ``M_PIl`` in ``long double``.
 
 Three kinds of evidence: values pinned from runs of the packaged rs274 (they hold without it),
-``postproc.long_double`` against glibc's own ``sinl``/``cosl``/``tanl`` through ctypes on x86-64, and a
+``postproc.interp.long_double`` against glibc's own ``sinl``/``cosl``/``tanl`` through ctypes on x86-64, and a
 seeded random differential against rs274 that reads every bit of each result (skipped without it).
 """
 
@@ -17,15 +17,15 @@ import re
 
 import pytest
 
-from postproc import long_double
+from postproc.interp import long_double
 from postproc.errors import ErrorList
-from postproc.evaluation import MappingEnv, evaluate_number
-from postproc.expr import Arithmetic, Vacancy
+from postproc.interp.evaluation import MappingEnv, evaluate_number
+from postproc.ir.expr import Arithmetic, Vacancy
 from postproc.rs274.expressions import LINUXCNC_SPELLING, parse_expr
 from postproc.simulate.toolpath import toolpath_events
 from tests.support.rs274 import available, run_rs274
 
-LCNC = MappingEnv({}, Vacancy.LINUXCNC, arithmetic=Arithmetic.X86_64_C)
+LCNC = MappingEnv({}, Vacancy.ZERO, arithmetic=Arithmetic.X86_64_C)
 
 # Printed by rs274 (LinuxCNC 2.9.0~pre1, Debian 12, x86-64) for ``#1=[expr]`` ``(DEBUG, #1)``.
 RS274_PRINTED = [
@@ -80,7 +80,7 @@ def test_round_beyond_a_c_int_is_refused_not_copied() -> None:
 
 def test_fanuc_arithmetic_stays_double() -> None:
     """The dialect family decides: IEEE double gives sin(pi) = 1.2246e-16, so FIX (toward zero) is 0."""
-    env = MappingEnv({}, Vacancy.FANUC)
+    env = MappingEnv({}, Vacancy.NULL)
     _, tree = parse_expr("SIN[180]", 0, LINUXCNC_SPELLING)
     assert evaluate_number(tree, env) == math.sin(math.pi)
 

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import pytest
 
-from postproc.control import Assign, EndWhile, Goto, IfThen, While
+from postproc.interp.control import Assign, EndWhile, Goto, IfThen, While
 from postproc.errors import UnsupportedError
-from postproc.expr import Binary, Func, Num, Var
+from postproc.ir.expr import Binary, Func, Num, Var
 from postproc.ir import Section
 from postproc.rs274.expressions import ExprSyntaxError
 from postproc.rs274.macro_b import parse_statement_fanuc, spell_statement_fanuc

@@ -20,10 +20,10 @@ from pathlib import Path
 import pytest
 
 from postproc import native
-from postproc.control import While
-from postproc.expr import Num
+from postproc.interp.control import While
+from postproc.ir.expr import Num
 from postproc.ir import Motion
-from postproc.source_map import ExecutedBlock
+from postproc.ir.source_map import ExecutedBlock
 
 ROOT = Path(__file__).resolve().parents[1]
 HOT = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["tool"]["postproc"]["compiled"]

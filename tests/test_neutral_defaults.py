@@ -9,7 +9,7 @@ import pytest
 from postproc.cycles.drilling import DrillingExpansion
 from postproc.cycles.section import CannedCycle
 from postproc.errors import ConfigError
-from postproc.evaluation import MappingEnv
+from postproc.interp.evaluation import MappingEnv
 from postproc.setup.machine_setup import MachineSetup
 from postproc.xmlio import lxml_etree
 

@@ -21,10 +21,10 @@ from hypothesis import strategies as st
 
 from postproc.api import read_program, translate
 from postproc.context import Context
-from postproc.control import Assign, Call, Goto, If, IfThen, ModalCall, Return, While
-from postproc.evaluation import certain_failure
+from postproc.interp.control import Assign, Call, Goto, If, IfThen, ModalCall, Return, While
+from postproc.interp.evaluation import certain_failure
 from postproc.errors import Diagnostics, ErrorLevel, ErrorList, UnsupportedError
-from postproc.expr import Binary, Expr, Func, Num, Unary, Var
+from postproc.ir.expr import Binary, Expr, Func, Num, Unary, Var
 from postproc.ir import Block
 from postproc.plugins import default_registry
 from postproc.rs274.expressions import LINUXCNC_SPELLING, spell_word_value

@@ -8,12 +8,12 @@ import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
-from postproc.control import (
+from postproc.interp.control import (
     Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndIf, EndRepeat, EndWhile, Goto, If, Repeat,
     Return, SubEnd, SubStart, While,
 )
 from postproc.errors import UnsupportedError
-from postproc.expr import Binary, Expr, Func, Num, Unary, Var
+from postproc.ir.expr import Binary, Expr, Func, Num, Unary, Var
 from postproc.ir import ProgramStart, Section
 from postproc.rs274.expressions import LINUXCNC_SPELLING, ExprSyntaxError
 from postproc.rs274.oword import (

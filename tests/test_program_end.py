@@ -9,7 +9,7 @@ import io
 import pytest
 
 from postproc.api import translate
-from postproc.control import Return, SubStart
+from postproc.interp.control import Return, SubStart
 from postproc.context import Context
 from postproc.dialect import Dialect
 from postproc.errors import Diagnostics

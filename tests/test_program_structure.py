@@ -6,7 +6,7 @@ malformed program with the same located error (issue #31, item 4).
   unclosed LinuxCNC ``o1 while`` was written as it was.
 - An expression a part of which is made of constants and fails (``1/0``, ``SQRT[-4]``, ``LN[0]``; Fanuc
   alarms, rs274 "Attempt to divide by zero", "Zero or negative argument to ln") is refused where it is read,
-  not kept symbolically for the controller to alarm on (``postproc.evaluation.certain_failure``).
+  not kept symbolically for the controller to alarm on (``postproc.interp.evaluation.certain_failure``).
 - One program number, one program (Fanuc: a call could not tell two ``O2000`` apart); one ``o<n> sub``
   (rs274: "redefining sub: o|100| already defined"). LinuxCNC's ``O<n>`` .. ``M99`` may stand twice: the
   first after the call wins (``test_linuxcnc_subprograms``, "the first O after the call wins").

@@ -11,7 +11,7 @@ from dialects.fanuc import Fanuc
 from postproc.cycles.resolve import CannedCycleResolveSyntax
 from postproc.plugins import default_registry
 from postproc.setup.machine_setup import InputSettings, MachineSetup
-from postproc.syntax import Pipeline
+from postproc.syntaxes.syntax import Pipeline
 from postproc.syntaxes.modal_state import ModalStateSyntax
 from postproc.testing.checks import pipeline_problems, pipeline_setups
 

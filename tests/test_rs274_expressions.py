@@ -10,9 +10,9 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from postproc.errors import UnsupportedError
-from postproc.evaluation import MappingEnv
-from postproc.evaluation import evaluate
-from postproc.expr import Binary, EvalError, Expr, Func, Num, Unary, Vacancy, Var
+from postproc.interp.evaluation import MappingEnv
+from postproc.interp.evaluation import evaluate
+from postproc.ir.expr import Binary, EvalError, Expr, Func, Num, Unary, Vacancy, Var
 from postproc.rs274.expressions import (
     FANUC_SPELLING, LINUXCNC_SPELLING, ExprSpelling, ExprSyntaxError, parse_condition, parse_expr,
     parse_word_value, spell_condition, spell_expr, spell_word_value,
@@ -221,19 +221,19 @@ def _has_round(e: Expr) -> bool:
 @settings(max_examples=400, suppress_health_check=[HealthCheck.filter_too_much, HealthCheck.too_slow])
 @given(trees(FANUC_SPELLING))
 def test_fanuc_round_trip(tree: Expr) -> None:
-    _round_trip(FANUC_SPELLING, tree, Vacancy.FANUC)
+    _round_trip(FANUC_SPELLING, tree, Vacancy.NULL)
 
 
 def test_a_negated_one_argument_atan_divided_keeps_its_meaning() -> None:
     """Found by the round trip: ``-ATAN[0.]/[-0.001]`` read back as the two-argument ATAN."""
     _round_trip(FANUC_SPELLING, Binary("div", Unary("neg", Func("atan_360", [Num(0.0)])), Num(-0.001)),
-                Vacancy.FANUC)
+                Vacancy.NULL)
 
 
 @settings(max_examples=400, suppress_health_check=[HealthCheck.too_slow])
 @given(trees(LINUXCNC_SPELLING))
 def test_linuxcnc_round_trip(tree: Expr) -> None:
-    _round_trip(LINUXCNC_SPELLING, tree, Vacancy.LINUXCNC)
+    _round_trip(LINUXCNC_SPELLING, tree, Vacancy.ZERO)
 
 
 # ----------------------------------------------------------------------------- rs274 as the oracle
@@ -261,7 +261,7 @@ def test_linuxcnc_values_match_rs274() -> None:
         if 'MESSAGE(" v' in line:
             key, value = line.split('MESSAGE(" ')[1].rstrip('")').split()
             got[int(key[1:])] = float(value)
-    env = MappingEnv({2: 2.0, 3: 10.0, "x": 3.0}, Vacancy.LINUXCNC)
+    env = MappingEnv({2: 2.0, 3: 10.0, "x": 3.0}, Vacancy.ZERO)
     assert len(got) == len(RS274_CASES)
     for i, case in enumerate(RS274_CASES):
         end, tree = parse_expr(case, 0, LINUXCNC_SPELLING)

@@ -11,7 +11,7 @@ import pytest
 from postproc.api import translate
 from postproc.errors import ConfigError
 from postproc.setup.machine_setup import load_setup
-from postproc.source_map import OutputMap
+from postproc.ir.source_map import OutputMap
 from postproc.simulate.verify import verify_lines
 from tests.support.tools import with_tools
 

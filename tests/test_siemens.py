@@ -18,7 +18,7 @@ from hypothesis import strategies as st
 
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList
-from postproc.expr import Binary, Expr, Func, Num, Unary, Var
+from postproc.ir.expr import Binary, Expr, Func, Num, Unary, Var
 from postproc.setup.machine_setup import MachineSetup, load_setup
 from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines

@@ -1,5 +1,5 @@
 """Subprogram identity across dialects (issue #31, items 2 and 3): the definition and every call of a
-subprogram say the same name in the target (``postproc.subprogram_names``), and the definition has the
+subprogram say the same name in the target (``postproc.interp.subprogram_names``), and the definition has the
 form its calls need.
 
 Expected texts are derived by hand from the rules: Fanuc programs are ``O0001``-``O9999`` and a name gets
@@ -16,7 +16,7 @@ import pytest
 
 from postproc.api import translate
 from postproc.errors import Diagnostics, UnsupportedError
-from postproc.subprogram_names import NameRule, SubprogramNames
+from postproc.interp.subprogram_names import NameRule, SubprogramNames
 from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
 from tests.support.rs274 import available, canonical_moves, run_rs274

@@ -13,7 +13,7 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from postproc.api import translate
-from postproc.comments import CommentSyntax
+from postproc.syntaxes.comments import CommentSyntax
 from postproc.errors import ConfigError, Location
 from postproc.plugins import default_registry
 from postproc.setup.machine_setup import load_setup

@@ -11,7 +11,7 @@ from postproc.errors import Diagnostics, ErrorList, ErrorLevel
 from postproc.ir import Block, CompoundMotion, Dwell, Feed, Motion, SpindleControl, SpindleOrientation
 from postproc.setup.machine_setup import InputSettings, MachineSettings, MachineSetup
 from postproc.context import Context
-from postproc.geometry import arc_points, arc_sweep, centre_from_radius
+from postproc.geometry.arcs import arc_points, arc_sweep, centre_from_radius
 from postproc.simulate.toolpath import num, simulate, toolpath_events
 
 HEADER = {"toolpath": 1, "units": "mm", "dialect": "fanuc"}

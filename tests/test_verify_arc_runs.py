@@ -2,7 +2,7 @@
 circle, judged by the path, not by the centres alone. Found by the held-out set (issue 26): CamBam's helical bores
 (``tests/heldout/mach3/ugs_cambam_ordbot_handle.nc``) begin each turn with an arc of 0.0123 mm whose end radius is
 0.00003 mm off its start radius; ISG and Fagor move that arc's centre onto its chord's bisector, 0.00087 mm away
-(``postproc.arc_end``), and cut the same circle within a micron. By centres alone the source's helix was one run
+(``postproc.geometry.arc_end``), and cut the same circle within a micron. By centres alone the source's helix was one run
 and the translation's was split at every such arc: verify said the structure differs, where the paths are the
 same."""
 

@@ -12,16 +12,17 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Callable
 
 from postproc.context import Context
-from postproc.comments import CommentSyntax
-from postproc.arc_end import NEAREST_CENTRE, ArcEndRule
-from postproc.state import MM_PER_INCH
+from postproc.syntaxes.comments import CommentSyntax
+from postproc.geometry.arc_end import NEAREST_CENTRE, ArcEndRule
+from postproc.ir.state import MM_PER_INCH
 from postproc.dialect import Dialect, Lazy, Reader
+from postproc.rs274.cycle_semantics import FANUC as FANUC_CYCLES
 from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
 from postproc.lowering.lower import BlockStep, LoweringStep
 from postproc.rs274.order_of_execution import stops_before_motion
 from postproc.setup.machine_setup import MachineSetup
-from postproc.syntax import Pipeline
+from postproc.syntaxes.syntax import Pipeline
 from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
 
@@ -113,7 +114,7 @@ class Fagor(Dialect):
     NATIVE_CYCLES = frozenset({"drill", "drill_dwell", "bore_feed", "bore_dwell_feed"})
     """G81 (drilling, dwell K) and G89 (boring, dwell K, feed out) [K]; Fanuc's G81/G85 are written as them
     with no dwell. Every other cycle is expanded (Fagor's G82-G88 are other cycles or unconfirmed)."""
-    CYCLE_SEMANTICS = "fanuc"
+    CYCLE_SEMANTICS = FANUC_CYCLES.name
     """Its G81/G89 move as Fanuc's G81/G85 do (the mapping above) [K]."""
     PROGRAM_NUMBERS = True
     """``%1001`` names the main program [V: the ``%<name>`` header]."""

@@ -30,7 +30,7 @@ from typing import Any, ClassVar
 
 from postproc.context import Context
 from postproc.errors import ProgramError, UnsupportedError
-from postproc.expr import Binary, Expr, Num
+from postproc.ir.expr import Binary, Expr, Num
 from postproc.ir import Block, Dwell, Motion
 from postproc.rs274.block_syntax import WordBlockSyntax, col_of_word
 from postproc.rs274.codes import CodeTable, g_key

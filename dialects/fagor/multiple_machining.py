@@ -38,10 +38,10 @@ from typing import Callable
 
 from postproc.context import Context
 from postproc.errors import ProgramError, UnsupportedError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, NativeCode
 from postproc.patterns import HolePattern, resolve_hole_pattern
-from postproc.state import PLANE_AXES
+from postproc.ir.state import PLANE_AXES
 
 CODES = {160: "line", 161: "parallelogram", 162: "grid", 163: "circle", 164: "arc", 165: "chord"}
 """Fagor's multiple machining codes and the neutral pattern kind each programs."""

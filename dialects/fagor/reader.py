@@ -26,7 +26,7 @@ from __future__ import annotations
 
 from typing import Iterable, Iterator
 
-from postproc.control import Assign
+from postproc.interp.control import Assign
 from postproc.dialect import Reader
 from postproc.errors import Location, ParseError, PostprocError
 from postproc.ir import Block, Comments, NativeCode, ProgramStart, Sequence

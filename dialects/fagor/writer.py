@@ -41,14 +41,14 @@ from postproc.cycle_words import CycleWords
 from postproc.cycles.section import WORD_ORDER
 from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
-from postproc.event_order import after_motion
-from postproc.expr import Expr
+from postproc.ir.event_order import after_motion
+from postproc.ir.expr import Expr
 from postproc.ir import Block, Comments, DistanceMode, MachineCoordinates, Motion, Section
 from postproc.output.home_position import SECOND_RETURN, reference_problem, reference_target
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.cycle_words import NEUTRAL_CYCLE_WORDS
 from postproc.rs274.semicolon_comments import SemicolonCommentWriter
-from postproc.state import PLANE_AXES
+from postproc.ir.state import PLANE_AXES
 
 from .codes import CODES, CYCLE_ALIASES
 from .cycle_words import cycle_words

@@ -6,12 +6,13 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Callable, Iterator
 
-from postproc.comments import CommentSyntax
+from postproc.syntaxes.comments import CommentSyntax
 from postproc.compensation.rules import CutterRules
 from postproc.rs274.cutter_rules import FANUC_A, FANUC_B, FANUC_T, FANUC_T_B, HAAS_A, HAAS_B, HAAS_T, HAAS_T_B
 from postproc.dialect import Dialect, Lazy, Reader
+from postproc.rs274.cycle_semantics import FANUC as FANUC_CYCLES
 from postproc.setup.machine_setup import MachineSetup
-from postproc.syntax import Pipeline
+from postproc.syntaxes.syntax import Pipeline
 from postproc.hookspecs import hookimpl
 from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.rs274.arc_ends import FANUC_ARC_END
@@ -52,7 +53,7 @@ class Fanuc(Dialect):
     G73-G89."""
     NATIVE_CYCLES = ALL_MILLING_CYCLES
     """G73, G74, G76, G81-G89 all run natively."""
-    CYCLE_SEMANTICS = "fanuc"
+    CYCLE_SEMANTICS = FANUC_CYCLES.name
     """Fanuc's cycle rules (``postproc.cycles.semantics``: initial level, G98/G99, K repeats)."""
     TAPE_MARKS = True
     """``%`` opens and closes a program on tape or DNC."""

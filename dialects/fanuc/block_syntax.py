@@ -9,6 +9,7 @@ from mypy_extensions import mypyc_attr
 from postproc.rs274.block_syntax import WordBlockSyntax
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.machine_codes import Defaults
+from postproc.frames.section import LAYERED
 
 from .codes import CODES
 from .machine_codes import DEFAULTS
@@ -29,7 +30,7 @@ class FanucBlockSyntax(WordBlockSyntax):
     3451#2 (mills only) admits one decimal place, run rounded [?: third-party, not modelled]."""
     CODES: ClassVar[CodeTable] = CODES
     FAMILY: ClassVar[str] = "fanuc"
-    FRAME_RULES: ClassVar[str] = "fanuc"
+    FRAME_RULES: ClassVar[str] = LAYERED
     MACHINE_DEFAULTS: ClassVar[Defaults] = DEFAULTS
     BASE_VARIANT: ClassVar[str] = "fanuc"
     DATA_TABLES: ClassVar[Mapping[int, tuple[str, int, int]]] = {

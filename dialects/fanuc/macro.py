@@ -16,9 +16,9 @@ Choices where the manuals leave room (documented, tested):
 from __future__ import annotations
 
 from postproc.context import Context
-from postproc.control import CONTROL, Call, ModalCall, ModalCallCancel, Return
+from postproc.interp.control import CONTROL, Call, ModalCall, ModalCallCancel, Return
 from postproc.errors import ParseError
-from postproc.expr import Expr, Num
+from postproc.ir.expr import Expr, Num
 from postproc.ir import Block, Section
 from postproc.rs274.block_syntax import DECIMAL_LETTERS
 

@@ -12,7 +12,7 @@ from postproc.dialect import Reader
 from postproc.errors import PostprocError
 from postproc.ir import Block, Sequence
 
-from postproc.lines import BOM, EOF_BYTE, lexable
+from postproc.syntaxes.lines import BOM, EOF_BYTE, lexable
 
 from postproc.rs274.canonical_line import CANONICAL, CODES, scan_words
 from postproc.rs274.lexer import WORDS_ONLY, WORD, lex_block

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 from typing import Callable
 
-from postproc.expr import EvalError, Value, VarKey
+from postproc.ir.expr import EvalError, Value, VarKey
 from postproc.interp.variables import MACHINE_ONLY
 from postproc.rs274.variables import MacroBVariables
 

@@ -12,19 +12,19 @@ from __future__ import annotations
 from typing import Any, ClassVar, Mapping
 
 from postproc.context import Context
-from postproc.control import (
+from postproc.interp.control import (
     ASSIGN, CONTROL, Assign, Call, EndFor, EndWhile, For, ModalCall, ModalCallCancel, Return, SubEnd, SubStart,
     While,
 )
 from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
-from postproc.expr import Binary, Expr, Func, Num, Unary, Var
+from postproc.ir.expr import Binary, Expr, Func, Num, Unary, Var
 from postproc.ir import Block, Section
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.expressions import FANUC_SPELLING, ExprSpelling, spell_word_value
 from postproc.rs274.macro_b import spell_statement_fanuc
 from postproc.rs274.lathe_writer import LatheWordWriter
-from postproc.subprogram_names import NameRule, SubprogramNames
+from postproc.interp.subprogram_names import NameRule, SubprogramNames
 
 from .block_syntax import FanucBlockSyntax
 from .codes import CODES

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Callable
 
-from postproc.comments import CommentSyntax
+from postproc.syntaxes.comments import CommentSyntax
 from postproc.lowering.lower import BlockStep, LoweringStep
 from postproc.rs274.cutter_rules import GSK_T
 from postproc.dialect import Dialect, Lazy, Reader
@@ -20,7 +20,7 @@ from postproc.hookspecs import hookimpl
 from postproc.rs274.arc_ends import FANUC_ARC_END
 from postproc.rs274.lathe_axes import LATHE_INCREMENTS
 from postproc.setup.machine_setup import MachineSetup
-from postproc.syntax import Pipeline
+from postproc.syntaxes.syntax import Pipeline
 from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
 

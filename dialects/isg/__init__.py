@@ -11,16 +11,16 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Callable
 
-from postproc.comments import CommentSyntax
-from postproc.arc_end import NEAREST_CENTRE, ArcEndRule
-from postproc.state import MM_PER_INCH
+from postproc.syntaxes.comments import CommentSyntax
+from postproc.geometry.arc_end import NEAREST_CENTRE, ArcEndRule
+from postproc.ir.state import MM_PER_INCH
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.hookspecs import hookimpl
-from postproc.lowering.lower import BlockStep, LoweringStep
+from postproc.lowering.lazy_step import LazyStep
 from postproc.lowering.structured_jumps import nest_jumps_keeping_equality
 from postproc.rs274.order_of_execution import stops_before_motion
 from postproc.setup.machine_setup import MachineSetup
-from postproc.syntax import Pipeline
+from postproc.syntaxes.syntax import Pipeline
 from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
 
@@ -28,36 +28,11 @@ if TYPE_CHECKING:
     from postproc.context import Context
 
 
-class _SelectToolData(LoweringStep):
-    """``postproc.isg_family.tool_data.select_tool_data``, imported when a translation first lowers for
-    this dialect."""
-
-    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        from postproc.isg_family.tool_data import select_tool_data as step
-        return step.start(ctx, target)
+select_tool_data = LazyStep("postproc.isg_family.tool_data:select_tool_data")
+resolve_radius_where_d_cannot = LazyStep("postproc.isg_family.tool_data:resolve_radius_where_d_cannot")
 
 
-class _ResolveRadiusWhereDCannot(LoweringStep):
-    """``postproc.isg_family.tool_data.resolve_radius_where_d_cannot``, imported when first used."""
-
-    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        from postproc.isg_family.tool_data import resolve_radius_where_d_cannot as step
-        return step.start(ctx, target)
-
-
-select_tool_data = _SelectToolData()
-resolve_radius_where_d_cannot = _ResolveRadiusWhereDCannot()
-
-
-class _AbsoluteMachineMoves(LoweringStep):
-    """``postproc.isg_family.machine_moves.absolute_machine_moves``, imported when first used."""
-
-    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        from postproc.isg_family.machine_moves import absolute_machine_moves as step
-        return step.start(ctx, target)
-
-
-absolute_machine_moves = _AbsoluteMachineMoves()
+absolute_machine_moves = LazyStep("postproc.isg_family.machine_moves:absolute_machine_moves")
 
 
 class Isg(Dialect):

@@ -22,6 +22,7 @@ from .codes import CODES
 TAP_CODES = {"in": "G331", "out": "G332"}
 """The rigid tap strokes' spelling, for the messages of ``read_tap_stroke``."""
 from postproc.isg_family.taps import MODES, read_tap_stroke
+from postproc.frames.section import ROTATE_FIRST
 
 
 class IsgBlockSyntax(WordBlockSyntax):
@@ -33,7 +34,7 @@ class IsgBlockSyntax(WordBlockSyntax):
     TITLE: ClassVar[str] = "ISG"
     CODES: ClassVar[CodeTable] = CODES
     POINTLESS_IN_UNITS: ClassVar[bool] = True
-    FRAME_RULES: ClassVar[str] = "isg"
+    FRAME_RULES: ClassVar[str] = ROTATE_FIRST
     """G68/G69 (``codes``) under the ``isg`` rules of ``postproc.frames``."""
 
     def g_sections(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],

@@ -27,7 +27,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
-from postproc.expr import Binary, Expr, Func, Num, Unary, Var
+from postproc.ir.expr import Binary, Expr, Func, Num, Unary, Var
 from postproc.isg_family.expressions import Unmodelled, parse_expr
 from postproc.rs274.expressions import skip_blanks
 from postproc.rs274.expressions import ExprSyntaxError

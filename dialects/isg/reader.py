@@ -27,13 +27,13 @@ from __future__ import annotations
 
 from typing import Callable, ClassVar, Iterable, Iterator
 
-from postproc.control import CONTROL, Assign, Call, Label, Return, SubEnd, SubStart
+from postproc.interp.control import CONTROL, Assign, Call, Label, Return, SubEnd, SubStart
 from postproc.dialect import Reader
 from postproc.errors import Location, ParseError, PostprocError
 from postproc.ir import BlockDelete, Block, Comments, MachineCoordinates, NativeCode, ProgramStart, Sequence, TapeMark
 from postproc.rs274.lexer import split_lines
 
-from postproc.expr import Expr, Num, Var
+from postproc.ir.expr import Expr, Num, Var
 from postproc.rs274.expressions import ExprSyntaxError
 
 from .commands import command_name, describe_command

@@ -20,7 +20,7 @@ import math
 import re
 from typing import Final
 
-from postproc.frames.section import FrameChange
+from postproc.frames.section import ROTATE_FIRST, FrameChange
 
 _ARGUMENT: Final = re.compile(r"\s*([A-Za-z][A-Za-z0-9]*)\s*(?:=\s*|\s+)([+-]?(?:\d+\.?\d*|\.\d+))\s*,?")
 _KEYS: Final = ("ANGLE", "CENTER1", "CENTER2")
@@ -30,7 +30,7 @@ def rotation_command(text: str) -> FrameChange | None:
     """``text`` (the command as written, from ``#``) as a frame change, or None where it is kept verbatim."""
     words = text.upper().split()
     if words == ["#ROTATION", "OFF"]:
-        return FrameChange("rotate_off", {}, "isg", "isg", text)
+        return FrameChange("rotate_off", {}, ROTATE_FIRST, "isg", text)
     if words[:2] != ["#ROTATION", "ON"]:
         return None
     rest = text[text.upper().index("ON", text.upper().index("#ROTATION") + 9) + 2:].strip()
@@ -51,4 +51,4 @@ def rotation_command(text: str) -> FrameChange | None:
     if set(values) != set(_KEYS) or values["CENTER1"] != 0.0 or values["CENTER2"] != 0.0:
         return None
     # the centre at the programmed origin on the active plane's two main axes (all three are 0)
-    return FrameChange("rotate", {"X": 0.0, "Y": 0.0, "Z": 0.0, "R": values["ANGLE"]}, "isg", "isg", text)
+    return FrameChange("rotate", {"X": 0.0, "Y": 0.0, "Z": 0.0, "R": values["ANGLE"]}, ROTATE_FIRST, "isg", text)

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from typing import Callable, Hashable
 
-from postproc.expr import Arithmetic, EvalError, Vacancy, Value, VarKey
+from postproc.ir.expr import Arithmetic, EvalError, Vacancy, Value, VarKey
 from postproc.interp.variables import MACHINE_ONLY
 
 from postproc.isg_family.expressions import P_BASE, P_LAST
@@ -33,7 +33,7 @@ class IsgVariables:
 
     @property
     def vacancy(self) -> Vacancy:
-        return Vacancy.FANUC  # never consulted for a vacant value: an unset variable is an error here
+        return Vacancy.NULL  # never consulted for a vacant value: an unset variable is an error here
 
     @property
     def arithmetic(self) -> Arithmetic:

@@ -23,17 +23,17 @@ from __future__ import annotations
 from typing import Any, ClassVar
 
 from postproc.context import Context
-from postproc.control import Assign, Call, Return, SubEnd, SubStart
+from postproc.interp.control import Assign, Call, Return, SubEnd, SubStart
 from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
-from postproc.expr import Expr
-from postproc.event_order import after_motion
+from postproc.ir.expr import Expr
+from postproc.ir.event_order import after_motion
 from postproc.ir import Block, DistanceMode, Motion, Section
 from postproc.output.home_position import SECOND_RETURN, reference_problem, reference_target
 from postproc.rs274.codes import CodeTable
 from postproc.isg_family.taps import stroke_words
 from postproc.rs274.writer import WordWriter
-from postproc.subprogram_names import NameRule, SubprogramNames
+from postproc.interp.subprogram_names import NameRule, SubprogramNames
 
 from .codes import CODES
 from .commands import OPENING, command_line
@@ -129,7 +129,7 @@ class IsgWriter(WordWriter):
 
     def generate_words(self, block: Block) -> str:
         """A dwell is alone in its ISG block (only a block number may join it), in the block's order of
-        events (``postproc.event_order``): what acts before the dwell (settings, tool, spindle start, coolant
+        events (``postproc.ir.event_order``): what acts before the dwell (settings, tool, spindle start, coolant
         on) in a block before it, the motion and what ends the block after it."""
         sections = block.sections
         if "Dwell" in sections and any(k not in _ALONE_WITH_DWELL for k in sections) \

@@ -15,16 +15,17 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Callable
 
-from postproc.comments import CommentSyntax
+from postproc.syntaxes.comments import CommentSyntax
 from postproc.cycle_words import CycleWords
-from postproc.arc_end import SPIRAL, ArcEndRule
+from postproc.geometry.arc_end import SPIRAL, ArcEndRule
 from postproc.dialect import Dialect, Lazy, Reader, ResolvedCycle
+from postproc.rs274.cycle_semantics import FANUC as FANUC_CYCLES
 from postproc.hookspecs import hookimpl
 from postproc.lowering.lower import BlockStep, LoweringStep
 from postproc.rs274.order_of_execution import stops_before_motion
 from postproc.setup.machine_setup import MachineSetup
-from postproc.state import MM_PER_INCH
-from postproc.syntax import Pipeline
+from postproc.ir.state import MM_PER_INCH
+from postproc.syntaxes.syntax import Pipeline
 from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
 
@@ -88,7 +89,7 @@ class Siemens(Dialect):
     ``cycle_writing``); every other cycle (a floating tap among them) is expanded for SINUMERIK."""
     RIGID_TAP_CYCLE = True
     """``CYCLE84`` is rigid by itself: Fanuc's ``M29`` before a tap cycle is left out (``cycle_writing``)."""
-    CYCLE_SEMANTICS = "fanuc"
+    CYCLE_SEMANTICS = FANUC_CYCLES.name
     """The cycles read move by Fanuc's rules (the reading pipeline's ``CannedCycleResolveSyntax("fanuc")``)."""
     ARC_END = ArcEndRule(metric=0.01, inch=0.01 / MM_PER_INCH, relative=0.001, runs=SPIRAL)
     """Alarm 14040 (error in end point of circle) when the start and end radii differ by more than MD 21000

@@ -18,13 +18,13 @@ from typing import Any, ClassVar
 
 from postproc.context import Context
 from postproc.errors import ProgramError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, Dwell, MachineCoordinates, Motion, ReturnLevel
 from postproc.isg_family.taps import MODES, read_tap_stroke
 from postproc.isg_family.tool_data import read_tool_data
 from postproc.rs274.block_syntax import WordBlockSyntax, col_of_word
 from postproc.rs274.codes import CodeTable, g_key
-from postproc.state import PLANE_AXES
+from postproc.ir.state import PLANE_AXES
 
 from . import frame_suppression, helix
 from .arcs import CIP_KEY, SiemensArc, SiemensCip, arc_words, cip_words

@@ -8,9 +8,9 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from postproc.control import CONTROL, Assign, Call, Return
+from postproc.interp.control import CONTROL, Assign, Call, Return
 from postproc.errors import ParseError
-from postproc.expr import Expr, Num, Var
+from postproc.ir.expr import Expr, Num, Var
 from postproc.ir import Block, Comments, CycleCall, CycleCancel
 from postproc.isg_family.expressions import Unmodelled
 from postproc.rs274.expressions import skip_blanks

@@ -18,9 +18,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from postproc.control import Do, Else, EndFor, EndIf, EndWhile, For, Goto, GotoLabel, If, Until, While
+from postproc.interp.control import Do, Else, EndFor, EndIf, EndWhile, For, Goto, GotoLabel, If, Until, While
 from postproc.errors import ParseError
-from postproc.expr import Expr, Num
+from postproc.ir.expr import Expr, Num
 from postproc.ir import Section
 from postproc.isg_family.expressions import Unmodelled
 from postproc.rs274.expressions import skip_blanks

@@ -24,11 +24,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from postproc.control import (
+from postproc.interp.control import (
     Assign, Do, DoWhile, Else, EndFor, EndIf, EndWhile, For, Goto, GotoLabel, If, Until, While,
 )
 from postproc.errors import Location, UnsupportedError
-from postproc.expr import Expr, Num, Unary, Var
+from postproc.ir.expr import Expr, Num, Unary, Var
 from postproc.ir import Section
 
 from .expressions import spell_expr, spell_var

@@ -81,8 +81,8 @@ from postproc.cycles.rigid_tap import end_rigid_mode
 from postproc.cycles.section import CannedCycle
 from postproc.errors import ProgramError
 from postproc.ir import Feed, NativeCode, Section
-from postproc.state import MM_PER_INCH
-from postproc.syntax import Syntax
+from postproc.ir.state import MM_PER_INCH
+from postproc.syntaxes.syntax import Syntax
 from postproc.xmlio import XAttr
 
 from .deep_hole import Unconfirmed, deep_hole

@@ -31,7 +31,7 @@ Functions [K: same chapter; degrees for the angles]: ``SIN COS TAN ASIN ACOS`` (
 from __future__ import annotations
 
 from postproc.errors import UnsupportedError
-from postproc.expr import Binary, Expr, Func, Num, Unary, Var
+from postproc.ir.expr import Binary, Expr, Func, Num, Unary, Var
 from postproc.isg_family.expressions import Unmodelled
 from postproc.rs274.expressions import MAX_DEPTH, ExprSyntaxError, decimal_end, shallow, skip_blanks
 

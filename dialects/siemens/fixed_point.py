@@ -31,7 +31,7 @@ import re
 from typing import TYPE_CHECKING
 
 from postproc.errors import ProgramError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import MachineCoordinates, Motion, Section
 from postproc.output.home_position import SECOND_RETURN, add_home, home_position
 from postproc.output.home_position import reference_problem as home_problem

@@ -26,8 +26,8 @@ from __future__ import annotations
 from typing import Final
 
 from postproc.errors import Location, ParseError
-from postproc.expr import Expr, Num
-from postproc.frames.section import FrameChange
+from postproc.ir.expr import Expr, Num
+from postproc.frames.section import CHAIN, FrameChange
 from postproc.isg_family.expressions import Unmodelled
 from postproc.rs274.expressions import skip_blanks
 
@@ -67,7 +67,7 @@ def read_frame(word: str, code: str, pos: int, end: int, file: str, line: int) -
             raise Unmodelled(f"{word} with computed values", at)
         values[letter] = value.value
         at = skip_blanks(code, stop)
-    return FrameChange(kind, _words(word, kind, values, pos), "chain", "siemens", code[pos:].strip())
+    return FrameChange(kind, _words(word, kind, values, pos), CHAIN, "siemens", code[pos:].strip())
 
 
 def _words(word: str, kind: str, values: dict[str, float], pos: int) -> dict[str, float | Expr]:

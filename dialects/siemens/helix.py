@@ -20,7 +20,7 @@ import math
 from typing import TYPE_CHECKING
 
 from postproc.errors import ProgramError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import CompoundMotion, Motion, Section
 from postproc.xmlio import XAttr
 

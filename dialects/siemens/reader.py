@@ -44,10 +44,10 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Iterable, Iterator
 
-from postproc.control import Assign, Label
+from postproc.interp.control import Assign, Label
 from postproc.dialect import Reader
 from postproc.errors import Location, ParseError, PostprocError
-from postproc.expr import Binary, Expr, Func, Num, Var
+from postproc.ir.expr import Binary, Expr, Func, Num, Var
 from postproc.ir import Block, BlockDelete, Comments, NativeCode, ProgramStart, Sequence, SpindleOrientation
 from postproc.isg_family.expressions import Unmodelled
 from postproc.isg_family.zero_offsets import ZeroOffsets

@@ -22,7 +22,7 @@ from postproc.context import Context
 from postproc.dialect import Dialect
 from postproc.ir import Block, CompoundMotion, Section, SpindleOrientation
 from postproc.lowering.lower import BlockStep, LoweringStep
-from postproc.synchronised_tap import RigidTap
+from postproc.lowering.synchronised_tap import RigidTap
 
 _ENDS_POSITION_CONTROL = frozenset(("SpindleControl", "ToolChange"))
 """Sections after which the spindle runs under speed control again (M3/M4/M5; a tool change)."""

@@ -57,7 +57,7 @@ the tapping direction again], read so only where:
   G94 is in force (whether G63 runs under G95 is not confirmed [?]) (``cycles.SiemensCycleRules``).
 
 The meaning then is a ``CannedCycle`` of kind ``tap``/``tap_left`` with ``pitch`` PIT (``RigidTap`` in every
-expansion: ``postproc.synchronised_tap``), so LinuxCNC gets ``G33.1`` and the Fanuc family its ``M29`` tap
+expansion: ``postproc.lowering.synchronised_tap``), so LinuxCNC gets ``G33.1`` and the Fanuc family its ``M29`` tap
 cycle, and a target that cannot synchronise the spindle (grbl) refuses it by name.
 """
 

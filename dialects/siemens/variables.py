@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from typing import Callable, Hashable
 
-from postproc.expr import Arithmetic, EvalError, Vacancy, Value, VarKey
+from postproc.ir.expr import Arithmetic, EvalError, Vacancy, Value, VarKey
 from postproc.interp.variables import MACHINE_ONLY
 
 from .expressions import R_BASE, R_LAST
@@ -29,7 +29,7 @@ class SiemensVariables:
 
     @property
     def vacancy(self) -> Vacancy:
-        return Vacancy.FANUC  # never consulted for a vacant value: an unset variable is an error here
+        return Vacancy.NULL  # never consulted for a vacant value: an unset variable is an error here
 
     @property
     def arithmetic(self) -> Arithmetic:

@@ -31,14 +31,14 @@ from __future__ import annotations
 from typing import Any, ClassVar
 
 from postproc.context import Context
-from postproc.control import ASSIGN, CONTROL, LABEL
+from postproc.interp.control import ASSIGN, CONTROL, LABEL
 from postproc.cycles.section import CannedCycle
-from postproc.synchronised_tap import RigidTap
+from postproc.lowering.synchronised_tap import RigidTap
 from postproc.dialect import Dialect
 from postproc.compensation.tool_table import ToolTable
 from postproc.errors import PostprocError, UnsupportedError
-from postproc.event_order import after_motion
-from postproc.expr import Expr
+from postproc.ir.event_order import after_motion
+from postproc.ir.expr import Expr
 from postproc.ir import Block, CompoundMotion, DistanceMode, Dwell, Motion, Section, SpindleControl, ToolLengthOffset
 from postproc.rs274.codes import CodeTable
 from postproc.isg_family.taps import stroke_words

@@ -71,11 +71,11 @@ def _input_path(path: str) -> str | None:
 def _watched(path: str, src: TextIO, setup: MachineSetup) -> tuple[Iterable[str], Diagnostics]:
     """The input's lines, with a progress bar where one is shown (``postproc.commands.progress``), and the
     diagnostics whose warnings print above the bar. The bar reads the lines as the check of their
-    length does (``postproc.lines.pieces``): never a line longer than the limit at once."""
+    length does (``postproc.syntaxes.lines.pieces``): never a line longer than the limit at once."""
     progress = progress_for(path)
     if progress is None:
         return src, Diagnostics()
-    from ..lines import pieces
+    from ..syntaxes.lines import pieces
     return (progress.lines(pieces(src, setup.limits.line_length)),
             Diagnostics(warn_stream=AboveProgress(progress, sys.stderr)))  # type: ignore[arg-type]
 
@@ -243,7 +243,7 @@ def cmd_config(args: argparse.Namespace) -> int:
     problems.extend(unknown_families(setup.foreign_codes, {d.family() for d in registry.dialects.values()}, args.file))
     pipeline = setup.pipeline_path()
     if pipeline is not None:
-        from ..syntax import load_pipeline
+        from ..syntaxes.syntax import load_pipeline
         try:
             load_pipeline(pipeline)
         except ConfigError as err:

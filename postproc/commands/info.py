@@ -28,7 +28,7 @@ from ..cycles.lowering import expand_canned_cycles
 from ..cycles.lathe_lowering import expand_lathe_cycles
 from ..dialect import Dialect
 from ..errors import Diagnostics, ErrorList, PostprocError, UsageError
-from ..geometry import CENTRE_KEYS, PLANE_INDEX, arc_sweep
+from ..geometry.arcs import CENTRE_KEYS, PLANE_INDEX, arc_sweep
 from ..ir import Block
 from ..lowering.lower import Lowering, lower_for
 from ..plugins import Registry, default_registry

@@ -8,7 +8,7 @@ from typing import Any, Iterator
 from ..context import Context
 from ..dialect import Dialect
 from ..ir import Block, CompoundMotion, Motion
-from ..state import PLANE_AXES
+from ..ir.state import PLANE_AXES
 
 _BY_SECTION = {
     "CutterCompensation": "cutter radius compensation", "DynamicCutterCompensation": "cutter radius compensation",

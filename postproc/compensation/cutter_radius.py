@@ -34,7 +34,7 @@ from dataclasses import dataclass, field
 from typing import Any, Callable, Union
 
 from ..errors import ProgramError, UnsupportedError
-from ..state import PLANE_AXES
+from ..ir.state import PLANE_AXES
 from .rules import CutterRules
 
 Point = tuple[float, float]

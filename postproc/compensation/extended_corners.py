@@ -37,7 +37,7 @@ from typing import Any, Callable
 from ..errors import ProgramError, UnsupportedError
 from .cutter_radius import CutterRadius, Item, Point, Segment, Suspended, find_turn
 from .rules import CutterRules
-from ..state import PLANE_AXES
+from ..ir.state import PLANE_AXES
 
 STRAIGHT = 1e-6
 """Radians within which two directions make no corner (the second move goes straight on)."""

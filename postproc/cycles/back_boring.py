@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from mypy_extensions import mypyc_attr
 
-from postproc.state import PLANE_AXES
+from postproc.ir.state import PLANE_AXES
 
 from .expansion import EPS, CycleExpansion, ToolPath, level
 from .section import CannedCycle

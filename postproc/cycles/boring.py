@@ -4,13 +4,13 @@ from __future__ import annotations
 
 from mypy_extensions import mypyc_attr
 
-from .expansion import CycleExpansion, ToolPath
+from .expansion import CycleExpansion, ToolPath, rules_of
 from .section import CannedCycle
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
 class BoringExpansion(CycleExpansion):
-    """Fanuc: G85 feed to the bottom, feed to R, (G98: rapid to the initial level); G89 the same with a
+    """Fanuc (``Semantics`` of the RS274 family base): G85 feed to the bottom, feed to R, (G98: rapid to the initial level); G89 the same with a
     dwell P at the bottom; G86 feed, spindle stop, rapid out, spindle CW (no dwell).
 
     RS274 (LinuxCNC's interpreter): G85 feeds to R and rapids to the clear level; G89 dwells and feeds
@@ -24,20 +24,20 @@ class BoringExpansion(CycleExpansion):
     ENDS_OVER_THE_SPOT = True
 
     def hole(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
-        rs274 = cycle.semantics == "rs274"
+        rules = rules_of(cycle)
         out = self.return_level(cycle)
         self.position(path, cycle, a, b)
         path.cut(cycle.bottom, cycle.feed)  # type: ignore[arg-type]
         if cycle.kind == "bore_stop":
-            if rs274:
+            if rules.dwell_always:
                 path.dwell(cycle.dwell, always=True)
             path.spindle("stop")
             path.rapid(level=out)
-            path.spindle(cycle.spindle if rs274 and cycle.spindle in ("cw", "ccw") else "cw")
+            path.spindle(cycle.spindle if rules.spindle_resumes and cycle.spindle in ("cw", "ccw") else "cw")
             return
         if cycle.kind == "bore_dwell_feed":
-            path.dwell(cycle.dwell, always=rs274)
-            if rs274:
+            path.dwell(cycle.dwell, always=rules.dwell_always)
+            if rules.feeds_out_to_clear:
                 path.cut(out, cycle.feed)
                 return
         path.cut(cycle.r, cycle.feed)  # type: ignore[arg-type]

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from mypy_extensions import mypyc_attr
 
-from .expansion import CycleExpansion, ToolPath
+from .expansion import CycleExpansion, ToolPath, rules_of
 from .section import CannedCycle
 
 
@@ -21,5 +21,5 @@ class DrillingExpansion(CycleExpansion):
         self.position(path, cycle, a, b)
         path.cut(cycle.bottom, cycle.feed)  # type: ignore[arg-type]
         if cycle.kind == "drill_dwell":
-            path.dwell(cycle.dwell, always=cycle.semantics == "rs274")
+            path.dwell(cycle.dwell, always=rules_of(cycle).dwell_always)
         path.rapid(level=self.return_level(cycle))

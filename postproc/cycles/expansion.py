@@ -14,15 +14,15 @@ import abc
 from typing import TYPE_CHECKING, ClassVar, Final, Iterator
 
 from postproc.errors import ConfigError, ProgramError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, CompoundMotion, Dwell, Feed, Motion, ProgramControl, Section, SpindleControl
 from postproc.ir import SpindleOrientation
-from postproc.state import PLANE_AXES
+from postproc.ir.state import PLANE_AXES
 from postproc.context import Context
-from postproc.syntax import Syntax
+from postproc.syntaxes.syntax import Syntax
 
 from .section import CannedCycle
-from .semantics import SEMANTICS, Semantics
+from .semantics import Semantics, semantics_named, semantics_names
 
 if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)
     from lxml import etree
@@ -37,10 +37,10 @@ UNBOUNDED: Final = 1 << 62
 def rules_of(cycle: CannedCycle) -> Semantics:
     """The family rules the cycle was resolved under (``CannedCycle.semantics``). A name no family has (an IR
     file's, a plugin's) is an error: the core has no default family whose rules it could move by instead."""
-    rules = SEMANTICS.get(cycle.semantics)
+    rules = semantics_named(cycle.semantics)
     if rules is None:
         raise ConfigError(f"a hole cycle resolved under the rules {cycle.semantics!r}, which are not modelled "
-                          f"(known: {', '.join(SEMANTICS)}): its motion cannot be made")
+                          f"(known: {', '.join(semantics_names())}): its motion cannot be made")
     return rules
 
 
@@ -132,7 +132,7 @@ class ToolPath:
         self.n = to_n
 
     def dwell(self, seconds: float | None, always: bool = False) -> None:
-        """A dwell; Fanuc emits none without P, LinuxCNC's interpreter always does (``always``)."""
+        """A dwell; none without P unless ``always`` (``Semantics.dwell_always``)."""
         if seconds or always:
             self.add(Dwell(float(seconds or 0.0)))
 

@@ -13,10 +13,10 @@ from typing import TYPE_CHECKING, Any, Sequence
 
 from postproc.block_rules import ArcError, arc_centre
 from postproc.context import Context
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.errors import ProgramError
 from postproc.ir import Block, Feed, Motion, Section
-from postproc.lathe_sections import LatheCycle
+from postproc.ir.lathe_sections import LatheCycle
 
 if TYPE_CHECKING:
     from postproc.compensation.rules import CutterRules

@@ -41,13 +41,13 @@ from typing import Any, Callable, Iterator
 
 from postproc.context import Context
 from postproc.dialect import Dialect
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.errors import PostprocError, UnsupportedError
 from postproc.ir import (
     Block, Comments, CompoundMotion, CutterCompensation, DistanceMode, FeedMode, MachineFunction, Motion, Plane,
     SpindleControl, ToolChange, ToolLengthOffset, ToolSelect,
 )
-from postproc.lathe_sections import CoordinateSet, LatheCycle
+from postproc.ir.lathe_sections import CoordinateSet, LatheCycle
 
 from ..lowering.machine_functions import comment_out
 from .lathe_offsets import LatheOffsets

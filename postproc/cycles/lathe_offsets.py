@@ -17,9 +17,9 @@ from typing import Protocol
 from postproc.compensation.tool_table import ToolTable
 from postproc.context import Context
 from postproc.errors import UnsupportedError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, CompoundMotion, DistanceMode, Motion, ToolSelect, Units
-from postproc.lathe_sections import CoordinateSet
+from postproc.ir.lathe_sections import CoordinateSet
 
 MM_PER_INCH = 25.4
 _PLAIN = frozenset(("rapid", "linear", "cw", "ccw"))

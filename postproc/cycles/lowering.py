@@ -35,10 +35,10 @@ from postproc.ir import (
     Block, Comments, CompoundMotion, Motion, ProgramControl, Section, SpindleControl, SpindleOrientation, one_line,
 )
 from postproc.context import DROPPED_MOVES, Context
-from postproc.control import CONTROL, LABEL
-from postproc.source_map import ExecutedBlock
+from postproc.interp.control import CONTROL, LABEL
+from postproc.ir.source_map import ExecutedBlock
 
-from postproc.synchronised_tap import RigidTap
+from postproc.lowering.synchronised_tap import RigidTap
 
 from .resolve import peck_clearance_mm
 from .section import CannedCycle

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from mypy_extensions import mypyc_attr
 
-from .expansion import CycleExpansion, ToolPath
+from .expansion import CycleExpansion, ToolPath, rules_of
 from .section import CannedCycle
 
 
@@ -24,14 +24,14 @@ class ManualBoringExpansion(CycleExpansion):
     KINDS = frozenset(("bore_manual",))
 
     def hole(self, path: ToolPath, cycle: CannedCycle, a: float, b: float) -> None:
-        rs274 = cycle.semantics == "rs274"
+        rules = rules_of(cycle)
         self.position(path, cycle, a, b)
         path.cut(cycle.bottom, cycle.feed)  # type: ignore[arg-type]
-        path.dwell(cycle.dwell, always=rs274)
+        path.dwell(cycle.dwell, always=rules.dwell_always)
         path.spindle("stop")
         path.program_stop()
-        if rs274:
-            path.spindle(cycle.spindle if cycle.spindle in ("cw", "ccw") else "cw")
+        if not rules.manual_retracts:
+            path.spindle(cycle.spindle if rules.spindle_resumes and cycle.spindle in ("cw", "ccw") else "cw")
             path.set_level(self.return_level(cycle))
             return
         path.rapid(level=self.return_level(cycle))

@@ -7,8 +7,8 @@ meanings of R and Z, modal cycle data, repetition, cancel, K/L repeats, the thre
 peck Q and shift Q, and refuses what the controller refuses with a located error. Then it has the
 cycle's family syntax expand it and moves the tracked position to where the tool ends.
 
-The ``semantics`` attribute picks the controller family's rules ('fanuc' or 'rs274' for LinuxCNC; every
-pipeline says which, the core has no default family); ``semantics.py`` lists every rule that differs. Which letter carries which cycle word (the
+The ``semantics`` attribute names the controller family's rules, registered by a family base
+(``postproc.cycles.semantics``; every pipeline says which, the core has no default family). Which letter carries which cycle word (the
 hole bottom, the R level, Q, P, the repeat count) and how a cycle is named in messages comes from the
 reading dialect (``ctx.cycle_words``, a ``CycleWords``), so another dialect's letters reuse this logic.
 """
@@ -22,13 +22,13 @@ from mypy_extensions import mypyc_attr
 
 from postproc.cycle_words import CycleWords
 from postproc.errors import ConfigError, Location, PostprocError, ProgramError, UnsupportedError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, CompoundMotion, NativeCode, Section
 from postproc.setup.machine_setup import CycleSettings
-from postproc.source_map import ExecutedBlock
-from postproc.state import MM_PER_INCH, PLANE_AXES, CycleState, ModalState
+from postproc.ir.source_map import ExecutedBlock
+from postproc.ir.state import MM_PER_INCH, PLANE_AXES, CycleState, ModalState
 from postproc.context import Context
-from postproc.syntax import Syntax
+from postproc.syntaxes.syntax import Syntax
 from postproc.xmlio import DEFAULT, lxml_etree
 
 from .back_boring import BackBoringExpansion
@@ -40,7 +40,7 @@ from .manual_boring import ManualBoringExpansion
 from .peck_drilling import PeckDrillingExpansion
 from .rigid_tap import RIGID_KEY, end_rigid_mode, note_rigid_mode, rigid_pitch
 from .section import WORD_ORDER, CannedCycle
-from .semantics import DWELLING, PECK, SEMANTICS, SHIFT, TAP, Semantics
+from .semantics import DWELLING, PECK, SHIFT, TAP, Semantics, semantics_named, semantics_names
 from .tapping import TappingExpansion
 
 if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)
@@ -78,12 +78,13 @@ class CannedCycleResolveSyntax(Syntax):
     __slots__ = ("semantics", "expansions", "_rules", "_by_kind", "_words_of")
 
     def __init__(self, semantics: str, expansions: list[CycleExpansion] | None = None) -> None:
-        if semantics not in SEMANTICS:
-            raise ValueError(f"unknown cycle semantics {semantics!r} (use {' or '.join(SEMANTICS)})")
+        rules = semantics_named(semantics)
+        if rules is None:
+            raise ValueError(f"unknown cycle semantics {semantics!r} (use {' or '.join(semantics_names())})")
         self.semantics = semantics
         self.expansions = list(expansions or [])
         """Expansions given in XML, overriding the built-in one of their kinds."""
-        self._rules: Semantics = SEMANTICS[semantics]
+        self._rules: Semantics = rules
         self._by_kind: dict[str, CycleExpansion] = {}
         self._words_of: tuple[CycleWords | None, str, frozenset[str], frozenset[str], tuple[str, ...]] = (
             None, "", frozenset(), frozenset(), ())
@@ -100,7 +101,7 @@ class CannedCycleResolveSyntax(Syntax):
             raise ValueError(f"unknown attribute(s) {', '.join(sorted(unknown))}")
         semantics = el.get("semantics")
         if semantics is None:
-            raise ValueError(f"needs attribute 'semantics' ({' or '.join(SEMANTICS)}: how the controller moves "
+            raise ValueError(f"needs attribute 'semantics' ({' or '.join(semantics_names())}: how the controller moves "
                              "through a cycle)")
         expansions = []
         for child in DEFAULT.children(el):
@@ -331,14 +332,14 @@ class CannedCycleResolveSyntax(Syntax):
     def _check(self, kind: str, code: str, modal: dict[str, Any], cw: CycleWords, depth: str,
                feed: float | None, return_level: str, spindle: str, call: bool, fail: "Failer") -> None:
         """The words the cycle needs, and the combinations the controller refuses."""
-        rs274 = self._rules.name == "rs274"
+        rules = self._rules
         if depth not in modal:
             raise fail(f"{code} needs a hole bottom {depth}")
         if cw.level not in modal:
             raise fail(f"{code} needs an R level {cw.level}")
         dwell = cw.dwell
         p = modal.get(dwell)
-        if rs274 and kind in DWELLING and p is None:
+        if rules.dwell_required and kind in DWELLING and p is None:
             raise fail(f"{code} needs a dwell time {dwell}")
         if p is not None and p < 0:
             raise fail(f"{code} dwell time {dwell} cannot be negative", dwell)
@@ -363,13 +364,13 @@ class CannedCycleResolveSyntax(Syntax):
                 raise fail(f"{code} cannot be used with {cw.return_to_r}")
             where = fail.at(_code_column(Block(fail.line, fail.text), cw.return_to_r))
             raise ProgramError(f"{code} cannot be used with {cw.return_to_r}", where)
-        if rs274 and kind in TAP and spindle != ("cw" if kind == "tap" else "ccw"):
+        if rules.spindle_checked and kind in TAP and spindle != ("cw" if kind == "tap" else "ccw"):
             direction = "cw" if kind == "tap" else "ccw"
             turning = "clockwise" if direction == "cw" else "counterclockwise"
             if direction in cw.spindle:
                 turning += f" ({cw.spindle[direction]})"
             raise fail(f"{code} needs the spindle turning {turning}")
-        if rs274 and kind in ("bore_stop", "bore_manual") and spindle not in ("cw", "ccw"):
+        if rules.spindle_checked and kind in ("bore_stop", "bore_manual") and spindle not in ("cw", "ccw"):
             raise fail(f"{code} needs the spindle turning")
 
     def _levels(self, ctx: Context, kind: str, code: str, modal: dict[str, Any], normal: str, level: str,

@@ -22,7 +22,7 @@ from typing import Any, Callable, Final
 from postproc.errors import ProgramError
 from postproc.ir import MachineFunction
 from postproc.lowering.machine_functions import RIGID_TAP
-from postproc.state import ModalState
+from postproc.ir.state import ModalState
 
 RIGID_KEY: Final = "RigidTapMode"
 """``ctx.state.extra`` key: present while rigid tapping mode is on (its value: the code, e.g. 'M29')."""

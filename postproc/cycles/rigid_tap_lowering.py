@@ -1,4 +1,4 @@
-"""The lowering step of rigid (spindle-synchronised) tapping: each ``RigidTap`` (``postproc.synchronised_tap``,
+"""The lowering step of rigid (spindle-synchronised) tapping: each ``RigidTap`` (``postproc.lowering.synchronised_tap``,
 where the rules are described) kept as the target's synchronised move, written as its rigid tap cycle, or
 refused. It lives with the cycles because it writes a tap cycle (``CannedCycle``), and the cycles package
 reads ``RigidTap``: the section below, the step here."""
@@ -11,13 +11,13 @@ from typing import Iterator
 from ..context import Context
 from ..dialect import Dialect
 from ..errors import Location, PostprocError, ProgramError, UnsupportedError
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import (Block, CompoundMotion, CycleCancel, DistanceMode, Feed, MachineFunction, Motion,
                   ReturnLevel, Section, SpindleControl, SpindleSpeed)
-from ..state import PLANE_AXES
+from ..ir.state import PLANE_AXES
 from ..lowering.lower import BlockStep, LoweringStep
 from ..lowering.machine_functions import RIGID_TAP, comment_out
-from ..synchronised_tap import RigidTap, rigid_taps
+from ..lowering.synchronised_tap import RigidTap, rigid_taps
 from .section import CannedCycle
 
 

@@ -29,7 +29,7 @@ class CannedCycle(Section):
     data, as with K0 or a block without hole position). ``position`` is the first hole in the plane,
     ``step`` the increment to each further hole (G91 rows; empty in G90, where a repeat drills the same
     spot). ``start`` is where the tool was before the block. ``semantics`` names how the controller moves
-    through the cycle ('fanuc' or 'rs274', ``postproc.cycles.semantics``: always said, the core has no
+    through the cycle (a family's registered rules, ``postproc.cycles.semantics``: always said, the core has no
     default family), ``call`` whether the block programs the cycle code itself.
     """
 

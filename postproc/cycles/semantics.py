@@ -1,31 +1,12 @@
-"""How a controller family moves through a hole cycle: Fanuc, or RS274/NGC (LinuxCNC).
+"""The neutral type of a controller family's hole-cycle rules (``Semantics``), and the registry of them.
 
-The two differ in a handful of rules (DIALECTS.md §2.1, "LinuxCNC / RS274-NGC baseline"), so one
-small table per family keeps the switch in one place; the resolve step and the expansions read it.
-
-============================  ===================================  ====================================
-rule                          fanuc                                rs274
-============================  ===================================  ====================================
-initial level                 Z when the cycle is first commanded after a cancel (G80, G00-G03): both
-G91 R measured from           the initial level: both
-start below R                 positions in the plane, then to R    rapid up to R first, where the tool
-                                                                   stands (every block whose initial
-                                                                   level is below R)
-G98 return level              the initial level                    the initial level, or R if higher
-positioning level             the tool's current level             the current level if above R, else
-                                                                   the return level (one traverse)
-repeat count 0                no hole                              an error (the letters: CycleWords)
-dwell P                       milliseconds (integer)               seconds
-cycle data after a new code   carried over (Z, R, Q, P)            Z and R (Q, P) must be given again
-G74/G84 without P             no dwell                             the last P of any cycle, even one
-                                                                   before a G80
-plain hole position words     X/Y in the plane only                any axis word repeats the cycle
-G74/G84, G86, G88, G89 motion per DIALECTS.md's Fanuc table        as LinuxCNC's interpreter prints it
-============================  ===================================  ====================================
-
-The rs274 column was checked against the packaged interpreter (``rs274`` from linuxcnc-uspace
-2.9.0~pre1+git20230208) and the shared conformance cases; its docs still describe older rules (G98 to
-the Z at the block's start, G91 R from it), which that interpreter no longer follows.
+Families differ in a handful of rules (DIALECTS.md §2.1): where the tool positions, which level G98 returns
+to, what a dwell P counts, which words a new cycle code carries over, and how some cycles move out of the
+hole. Each rule is a field named after the behaviour; a family base defines its tables (the RS274 family's,
+Fanuc's and RS274/NGC's, in ``postproc.rs274.cycle_semantics``) and registers them by name
+(``register_semantics``). The resolve step and the expansions look a cycle's rules up by the name it was
+resolved under (``CannedCycle.semantics``, ``Dialect.CYCLE_SEMANTICS``); the core has no family's table
+and no default one.
 """
 
 from __future__ import annotations
@@ -45,7 +26,8 @@ DWELLING: Final = frozenset(("drill_dwell", "bore_stop", "bore_manual", "bore_dw
 @mypyc_attr(allow_interpreted_subclasses=True)
 @dataclass(frozen=True, slots=True)
 class Semantics:
-    """The rules of one family (see the module table)."""
+    """The rules of one family: a field per rule, named after the behaviour (a family's table with its
+    sources: ``postproc.rs274.cycle_semantics``)."""
 
     name: str
     rise_to_r: bool
@@ -58,6 +40,22 @@ class Semantics:
     sticky_tap_dwell: bool
     unsupported: frozenset[str]
     """Cycles with no meaning under this family's words."""
+    dwell_required: bool
+    """G82, G86, G88, G89 (``DWELLING``) are refused without a dwell P."""
+    spindle_checked: bool
+    """A tapping cycle is refused unless the spindle turns its direction, G86/G88 unless it turns at all."""
+    dwell_always: bool
+    """Every cycle that dwells makes a dwell, a zero one without P (G86 included); else only with a P."""
+    spindle_resumes: bool
+    """After a spindle stop in the hole (G86, G88) the spindle restarts in the direction it had; else CW."""
+    feeds_out_to_clear: bool
+    """G89 feeds from the bottom straight out to the clear level; else it feeds to R and rapids on."""
+    stops_to_reverse: bool
+    """Tapping stops the spindle, reverses it, dwells, feeds out to the clear level, stops and restarts it
+    forward; else it dwells, reverses, feeds to R, rapids to the clear level and turns forward again."""
+    manual_retracts: bool
+    """G88 rapids out after the program stop (the spindle restarted CW after); else no retract move: the
+    tool is taken to be at the clear level."""
 
     # A family's rules are one constant shared by every run: a copy of the state that reaches them (the
     # dry run of a loop copies the modal state, whose next-hole memo holds its resolve step) shares them
@@ -70,12 +68,26 @@ class Semantics:
         return self
 
 
-FANUC: Final = Semantics("fanuc", rise_to_r=False, clear_above_r=False, position_at_clear=False,
-                  dwell_ms=True, carry_over=True, any_axis_repeats=False, zero_repeat_error=False,
-                  sticky_tap_dwell=False, unsupported=frozenset())
-RS274: Final = Semantics("rs274", rise_to_r=True, clear_above_r=True, position_at_clear=True,
-                  dwell_ms=False, carry_over=False, any_axis_repeats=True, zero_repeat_error=True,
-                  sticky_tap_dwell=True, unsupported=frozenset(("fine_bore", "back_bore")))
-"""LinuxCNC has no fine boring (G76 threads) and its G87 takes I/J/K: its reader keeps G87 verbatim."""
 
-SEMANTICS: Final = {"fanuc": FANUC, "rs274": RS274}
+
+_KNOWN: Final[dict[str, Semantics]] = {}
+"""Name -> rules, as the family bases registered them."""
+
+
+def register_semantics(rules: Semantics) -> None:
+    """Make ``rules`` known by its name (a family base, once at import); a second table of the same name is
+    a programming error."""
+    known = _KNOWN.get(rules.name)
+    if known is not None and known != rules:
+        raise ValueError(f"cycle rules {rules.name!r} registered twice, with different rules")
+    _KNOWN[rules.name] = rules
+
+
+def semantics_named(name: str) -> Semantics | None:
+    """The registered rules of that name, or None."""
+    return _KNOWN.get(name)
+
+
+def semantics_names() -> list[str]:
+    """The names of every registered family's rules, in registration order (for messages)."""
+    return list(_KNOWN)

@@ -5,10 +5,10 @@ from __future__ import annotations
 from mypy_extensions import mypyc_attr
 
 from postproc.ir import SpindleControl
-from postproc.state import PLANE_AXES
-from postproc.synchronised_tap import RigidTap
+from postproc.ir.state import PLANE_AXES
+from postproc.lowering.synchronised_tap import RigidTap
 
-from .expansion import CycleExpansion, ToolPath
+from .expansion import CycleExpansion, ToolPath, rules_of
 from .section import CannedCycle
 
 
@@ -45,7 +45,7 @@ class TappingExpansion(CycleExpansion):
             path.rapid(level=self.return_level(cycle))
             return
         path.cut(cycle.bottom, cycle.feed)  # type: ignore[arg-type]
-        if cycle.semantics == "rs274":
+        if rules_of(cycle).stops_to_reverse:
             path.spindle("stop")
             path.spindle(reverse)
             path.dwell(cycle.dwell, always=True)

@@ -27,7 +27,7 @@ from types import TracebackType
 from typing import Any, BinaryIO, Callable, Iterable, Iterator, Sequence, TextIO
 
 from .canvas import Canvas, PngCanvas, Point, SvgCanvas, dashes, text_width, wrap
-from ..geometry import CENTRE_KEYS, arc_points
+from ..geometry.arcs import CENTRE_KEYS, arc_points
 from .pointstore import PointStore
 
 __all__ = ["Backplot", "Frame", "Style", "dashes", "render"]

@@ -17,9 +17,9 @@ from mypy_extensions import mypyc_attr
 
 from ..context import Context, HoleLane
 from ..errors import PostprocError
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import Block
-from ..state import PLANE_AXES, ModalState
+from ..ir.state import PLANE_AXES, ModalState
 from ..cycles.expansion import CycleExpansion
 from ..cycles.resolve import (DWELL_KEY, STATE_KEY, WORD_RANK, CannedCycleResolveSyntax, Failer, LazyExpansion,
                               cycle_words, drop_cycle_sections)

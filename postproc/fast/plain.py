@@ -16,7 +16,7 @@ from typing import Final, cast
 from mypy_extensions import mypyc_attr
 
 from ..context import BlockLane, Context
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import Block, Feed, Motion, Sequence
 from ..numbers import decimal_value
 from ..rs274.block_syntax import AXIS_LETTERS, CENTER_AXIS, WordBlockSyntax

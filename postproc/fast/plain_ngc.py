@@ -21,7 +21,7 @@ from typing import Final
 from mypy_extensions import mypyc_attr
 
 from ..context import BlockLane, Context
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import Block, Feed
 from ..rs274.codes import g_key
 from ..rs274.ngc_block_syntax import _STATE_KEY as NO_MOTION_KEY, NgcWordBlockSyntax

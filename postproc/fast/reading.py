@@ -18,7 +18,7 @@ from ..cycles.resolve import CannedCycleResolveSyntax
 from ..rs274.block_syntax import WordBlockSyntax
 from ..rs274.lathe_block_syntax import LatheBlockSyntax
 from ..rs274.ngc_block_syntax import NgcWordBlockSyntax
-from ..syntax import Pipeline
+from ..syntaxes.syntax import Pipeline
 from .holes import NextHoleLane
 from .lane import own_in
 from .plain import PlainLane, PlainLatheLane

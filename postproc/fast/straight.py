@@ -14,13 +14,13 @@ from typing import Final
 
 from mypy_extensions import mypyc_attr
 
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import Block, Feed, Motion, Sequence
 from ..numbers import MAX_PLACES, SHORT_RANGE, as_written
 from ..output.writer_base import Lane
 from ..rs274.motion_words import tiny_arc
 from ..rs274.writer import WordWriter
-from ..state import PLANE_AXES
+from ..ir.state import PLANE_AXES
 
 AXES: Final = frozenset("XYZABCUVW")
 LANE_MODES: Final = frozenset(("rapid", "linear", "cw", "ccw"))

@@ -10,12 +10,12 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from ..errors import ProgramError
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import Block, Motion, Section
 from .affine import XYZ
 from .frame import PLANE_AXES, Frame, chain_component
 from .section import FrameChange
-from .words import COMPUTED, FANUC_FORBIDDEN, LINEAR, SWAPPED, axes_of
+from .words import COMPUTED, LAYERED_FORBIDDEN, LINEAR, SWAPPED, axes_of
 
 if TYPE_CHECKING:
     from .evaluation import Evaluation
@@ -31,15 +31,15 @@ def command(ev: Evaluation, block: Block, change: FrameChange) -> None:
         if isinstance(value, Expr):
             raise ProgramError(COMPUTED)
         words[letter] = value * scale if letter in LINEAR else value
-    fanuc = frame.rules == "fanuc"
-    if fanuc and kind in ("local", "origin") and frame.linear_active():
-        raise ProgramError(FANUC_FORBIDDEN.format(what=change.describe()))
-    if fanuc and kind in ("local", "origin") and ev.modal.distance == "incremental":
+    layered = frame.rules == "layered"
+    if layered and kind in ("local", "origin") and frame.linear_active():
+        raise ProgramError(LAYERED_FORBIDDEN.format(what=change.describe()))
+    if layered and kind in ("local", "origin") and ev.modal.distance == "incremental":
         raise ProgramError(f"{change.describe()} in incremental mode is not simulated (whether its words are "
                            "increments is not settled [?]): program it in absolute mode")
     compensating = ev.modal.extra.get("frames.cutter") in SWAPPED
     if compensating and (kind in ("local", "origin", "origin_clear", "origin_suspend", "origin_restore")
-                         or frame.rules in ("fanuc", "chain", "isg")):
+                         or frame.rules in ("layered", "chain", "rotate_first")):
         # [V] rs274: "Cannot change axis offsets with cutter radius comp"; [K] Fanuc commands mirror,
         # scaling and rotation before compensation starts and cancels them after it ends; a SINUMERIK
         # frame change under G41/G42 is not simulated [?: how the compensated path joins across it]
@@ -51,7 +51,7 @@ def command(ev: Evaluation, block: Block, change: FrameChange) -> None:
     if kind == "local":
         frame.set_local(axes_of(words), p)
     elif kind == "origin":
-        if fanuc and any(frame.local.values()):
+        if layered and any(frame.local.values()):
             raise ProgramError(f"{change.describe()} while a local coordinate system is in force is not simulated "
                                "(whether it cancels that system is not settled [?]): cancel it first")
         frame.set_origin(axes_of(words), p, change.describe())
@@ -112,8 +112,8 @@ def pending(ev: Evaluation, s: dict[str, Section], frame: Frame) -> None:
 
 
 def rotate(ev: Evaluation, frame: Frame, change: FrameChange, words: dict[str, float]) -> None:
-    if frame.rules == "isg":
-        isg_rotate(ev, frame, change, words)
+    if frame.rules == "rotate_first":
+        rotate_first(ev, frame, change, words)
         return
     plane = ev.modal.plane
     if plane != "XY":
@@ -141,7 +141,7 @@ def rotate(ev: Evaluation, frame: Frame, change: FrameChange, words: dict[str, f
     frame.rotate(plane, c1, c2, degrees, ev.p)
 
 
-def isg_rotate(ev: Evaluation, frame: Frame, change: FrameChange, words: dict[str, float]) -> None:
+def rotate_first(ev: Evaluation, frame: Frame, change: FrameChange, words: dict[str, float]) -> None:
     """ISG G68 [V: Beckhoff TF5200 programming manual, "Rotate the coordinate system in the plane
     (G68/G69)"]: R in degrees, absolute (none: 0); the centre's absolute coordinates on the plane's two
     main axes (G17 X and Y, G18 Z and X, G19 Y and Z; G91 or not), an omitted one the current position; a

@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING, Protocol
 
 if TYPE_CHECKING:
     from ..context import Context
-    from ..state import ModalState
+    from ..ir.state import ModalState
     from .frame import Frame, Position
     from .run_state import FrameRun
 

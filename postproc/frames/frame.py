@@ -1,21 +1,23 @@
 """The frame a program's points are read in, and how each frame command changes it.
 
 A programmed point ``p`` (program coordinates) reaches the work coordinates (those of the active work
-system, G54...) as ``w = map p`` on X, Y, Z, and as ``w = p + offset`` on the other axes. Two rule sets:
+system, G54...) as ``w = map p`` on X, Y, Z, and as ``w = p + offset`` on the other axes. Four rule sets,
+named after what they do; a dialect's reading names the one its controller follows (``FrameChange.rules``):
 
-* ``rs274`` (LinuxCNC, [V] ``src/emc/rs274ngc/interp_convert.cc`` ``convert_axis_offsets`` and
+* ``shared_offset`` (RS274/NGC: LinuxCNC, grbl, [V] ``src/emc/rs274ngc/interp_convert.cc`` ``convert_axis_offsets`` and
   ``convert_setup``, checked with rs274's SET_G92_OFFSET/SET_XY_ROTATION): ``w = R(p + o)``, where ``o``
   is the one offset G52 and G92 share (G52 sets it, G92 makes the current point read the programmed
   value: ``o = p + o - value``; G92.1 and G92.2 clear it, G92.1 also its parameters, G92.3 restores it
   from them) and ``R`` is the active work system's XY rotation (G10 L2 R, about the work origin).
-* ``fanuc`` (Fanuc 0i/30i mill): ``w = T(Rot(Scale(Mirror(p))))`` [K: Fanuc 0i-MF operator's manual,
+* ``layered`` (Fanuc 0i/30i mill, and the ISO dialects that follow it): mirror, scaling, rotation, then the
+  offsets, ``w = T(Rot(Scale(Mirror(p))))`` [K: Fanuc 0i-MF operator's manual,
   "programmable mirror image", as in Siemens' ISO-dialect manual 3.2: mirror, then scaling, then
   rotation, commanded in that order and cancelled in reverse]; ``T`` adds the G52 local offset and the
   G92 shift. G68 rotates about its centre in the active plane (R absolute: parameter 5400#0 RIN = 0,
   [V] 0i-A connection manual), G51 scales about its centre (a negative factor mirrors), G51.1 mirrors
   about a line per axis.
-* ``isg`` (Beckhoff TwinCAT CNC): ``w = T(Rot(p))``, G68's rotation about its centre acting on the
-  programmed coordinates before any offset (``postproc.frames.lowering`` ``isg_rotate``).
+* ``rotate_first`` (Beckhoff TwinCAT CNC, ISG): ``w = T(Rot(p))``, G68's rotation about its centre acting on the
+  programmed coordinates before any offset (``postproc.frames.commands`` ``rotate_first``).
 * ``chain`` (SINUMERIK's programmable frame, ``$P_PFRAME``): ``w = F p`` where each replacing command
   (TRANS, ROT, SCALE, MIRROR) sets ``F`` to its one component, clearing offset, rotation, scaling and
   mirroring alike, and each additive one (ATRANS, AROT, ASCALE, AMIRROR) chains its component onto the
@@ -51,32 +53,32 @@ class Frame:
     __slots__ = ("rules", "offset", "saved", "applied", "local", "rotation", "last_angle", "scaling", "mirror", "turns",
                  "work", "map", "polar", "pending")
 
-    def __init__(self, rules: str = "rs274") -> None:
+    def __init__(self, rules: str) -> None:
         self.rules = rules
         self.offset: dict[str, float] = {}
-        """G92's offset (rs274: shared with G52; fanuc: the G92 shift of every work system)."""
+        """G92's offset (shared_offset: shared with G52; layered: the G92 shift of every work system)."""
         self.saved: dict[str, float] = {}
-        """rs274: the offset's parameters (#5211-#5219), what G92.3 restores."""
+        """shared_offset: the offset's parameters (#5211-#5219), what G92.3 restores."""
         self.applied = False
-        """rs274: the offset is in force (#5210: G52 and G92 set it, G92.1 and G92.2 clear it, G92.3 sets it
+        """shared_offset: the offset is in force (#5210: G52 and G92 set it, G92.1 and G92.2 clear it, G92.3 sets it
         [V] ``interp_convert.cc`` ``convert_axis_offsets``)."""
         self.local: dict[str, float] = {}
-        """fanuc: the G52 local offset."""
+        """layered: the G52 local offset."""
         self.rotation: tuple[str, float, float, float] | None = None
-        """fanuc G68: (plane, first and second centre coordinate, degrees)."""
+        """layered, rotate_first: G68 (plane, first and second centre coordinate, degrees)."""
         self.last_angle: float | None = None
-        """fanuc: the angle of the program's last G68, kept through G69 (an incremental R's reference)."""
+        """layered: the angle of the program's last G68, kept through G69 (an incremental R's reference)."""
         self.scaling: tuple[tuple[float, float, float], tuple[float, float, float]] | None = None
-        """fanuc G51: (centre, factor per axis X, Y, Z)."""
+        """layered: G51 (centre, factor per axis X, Y, Z)."""
         self.mirror: dict[str, float] = {}
-        """fanuc G51.1: axis -> the coordinate it is mirrored about."""
+        """layered: G51.1 axis -> the coordinate it is mirrored about."""
         self.turns: dict[int, float] = {}
-        """rs274: each work system's XY rotation (G10 L2 R), by work system (1 = G54)."""
+        """shared_offset: each work system's XY rotation (G10 L2 R), by work system (1 = G54)."""
         self.work = 1
         self.map: Affine = IDENTITY
         """X, Y, Z: program point -> work point."""
         self.polar: str | None = None
-        """fanuc G16: the plane whose first axis word is a radius and second an angle (None: G15)."""
+        """G16 the plane whose first axis word is a radius and second an angle (None: G15)."""
         self.pending: set[str] = set()
         """chain: the axes a frame change moved in program coordinates, until a move programs them
         absolutely (an incremental move there is refused: ``postproc.frames.lowering``)."""
@@ -98,7 +100,7 @@ class Frame:
         if self.rules == "chain":
             return  # the map is the chained frame itself (``chain``)
         offset = tuple(self.offset.get(a, 0.0) + self.local.get(a, 0.0) for a in XYZ)
-        if self.rules == "rs274":
+        if self.rules == "shared_offset":
             turn = self.turns.get(self.work, 0.0)
             self.map = translation(offset).then(Affine(rotation(PLANE_AXES["XY"], turn))) if turn else translation(offset)
             return
@@ -119,13 +121,13 @@ class Frame:
     def set_local(self, values: dict[str, float], p: Position) -> None:
         """G52: the local offset is replaced on the named axes; the tool stays, so the program position
         moves by the difference (rs274: the offset G92 shares, [V] convert_axis_offsets)."""
-        store = self.offset if self.rules == "rs274" else self.local
+        store = self.offset if self.rules == "shared_offset" else self.local
         for axis, value in values.items():
             old = store.get(axis, 0.0)
             here = p.get(axis)
             p[axis] = None if here is None else here + old - value
             store[axis] = value
-        if self.rules == "rs274":
+        if self.rules == "shared_offset":
             self.saved = dict(self.offset)
             self.applied = True
         self.compose()
@@ -140,7 +142,7 @@ class Frame:
                                    f"(program an absolute move on {axis} first)")
             self.offset[axis] = here + self.offset.get(axis, 0.0) - value
             p[axis] = value
-        if self.rules == "rs274":
+        if self.rules == "shared_offset":
             self.saved = dict(self.offset)
             self.applied = True
         self.compose()
@@ -166,7 +168,7 @@ class Frame:
         self.compose()
 
     def rotate(self, plane: str, c1: float, c2: float, degrees: float, p: Position) -> None:
-        """G68 (fanuc): the program position on the plane's axes is unknown until programmed again."""
+        """G68 (layered): the program position on the plane's axes is unknown until programmed again."""
         self.rotation = (plane, c1, c2, degrees)
         self.last_angle = degrees
         self._forget(PLANE_AXES[plane][:2], p)
@@ -178,7 +180,7 @@ class Frame:
         self.compose()
 
     def scale(self, centre: tuple[float, float, float], factors: tuple[float, float, float], p: Position) -> None:
-        """G51 (fanuc)."""
+        """G51 (layered)."""
         self.scaling = (centre, factors)
         self._forget(tuple(a for a, f in zip(XYZ, factors) if f != 1.0), p)
 
@@ -189,12 +191,12 @@ class Frame:
         self.compose()
 
     def set_mirror(self, lines: dict[str, float], p: Position) -> None:
-        """G51.1 (fanuc): mirrored about ``lines`` on their axes."""
+        """G51.1 (layered): mirrored about ``lines`` on their axes."""
         self.mirror.update(lines)
         self._forget(tuple(lines), p)
 
     def clear_mirror(self, axes: tuple[str, ...], p: Position) -> None:
-        """G50.1 (fanuc): the named axes are no longer mirrored."""
+        """G50.1 (layered): the named axes are no longer mirrored."""
         for axis in axes:
             if axis in self.mirror:
                 del self.mirror[axis]
@@ -202,12 +204,12 @@ class Frame:
         self.compose()
 
     def set_turn(self, work: int, degrees: float) -> None:
-        """G10 L2 R (rs274): work system ``work``'s XY rotation."""
+        """G10 L2 R (shared_offset): work system ``work``'s XY rotation."""
         self.turns[work] = degrees
         self.compose()
 
     def select_work(self, work: int) -> None:
-        """G54...: the new work system's rotation is in force (rs274)."""
+        """G54...: the new work system's rotation is in force (shared_offset)."""
         self.work = work
         self.compose()
 

@@ -44,12 +44,12 @@ from ..context import Context
 from ..dialect import Dialect
 from ..compensation.tool_length import ToolLength
 from ..errors import PostprocError, ProgramError
-from ..control import ASSIGN, CONTROL
-from ..expr import Binary, Expr, Num
+from ..interp.control import ASSIGN, CONTROL
+from ..ir.expr import Binary, Expr, Num
 from ..ir import Block, CompoundMotion, CutterCompensation, Motion, Section
 from ..ir.keys import watches_none
 from ..lowering.lower import BlockStep, LoweringStep, run_blocks
-from ..state import MM_PER_INCH, ModalState, changes_nothing
+from ..ir.state import MM_PER_INCH, ModalState, changes_nothing
 from .affine import EXACT, INDEX, XYZ
 from .frame import PLANE_AXES, Frame, Position
 from .run_order import RunOrder
@@ -57,7 +57,7 @@ from .run_state import RUN_KEY, FrameRun
 from .section import FrameChange
 from .offset_changes import current_point_reads, data_setting
 from .commands import command, pending
-from .words import COMPUTED, FANUC_FORBIDDEN, LINEAR, SWAPPED, SYMBOLIC, note as _note
+from .words import COMPUTED, LAYERED_FORBIDDEN, LINEAR, SWAPPED, SYMBOLIC, note as _note
 
 _TURNED: Final = {"cw": "ccw", "ccw": "cw"}
 
@@ -205,7 +205,7 @@ class FrameEvaluator(BlockStep):
         self.plain_mm = self.scale == 1.0 and modal.distance == "absolute"
         frame = self.frame
         if modal.plane != plane and frame is not None and frame.rotation is not None:
-            if frame.rules == "isg":
+            if frame.rules == "rotate_first":
                 # [V] Beckhoff TF5200 programming manual, "Rotate the coordinate system in the plane (G68/G69)": a
                 # change of plane deselects the contour rotation, with a warning
                 frame.unrotate(self.p)
@@ -215,8 +215,8 @@ class FrameEvaluator(BlockStep):
                 # [V] Fanuc 15i/16i operator's manuals: no plane selection in the mode of coordinate rotation
                 raise ProgramError("the plane cannot change while coordinate rotation is on")
         if modal.work_offset != work:
-            if frame is not None and frame.rules == "fanuc" and frame.linear_active():
-                raise ProgramError(FANUC_FORBIDDEN.format(what="a work system change"))
+            if frame is not None and frame.rules == "layered" and frame.linear_active():
+                raise ProgramError(LAYERED_FORBIDDEN.format(what="a work system change"))
             for axis in self.p:
                 self.p[axis] = None  # the tool stays; its place in the new system is not known here
             if frame is not None:
@@ -335,14 +335,14 @@ class FrameEvaluator(BlockStep):
         assert frame is not None
         p, scale, mode = self.p, self.scale, m.mode
         if "MachineCoordinates" in s and mode not in ("home", "home2"):
-            if frame.rules == "fanuc" and frame.linear_active():
-                raise ProgramError(FANUC_FORBIDDEN.format(what="a move in machine coordinates"))
+            if frame.rules == "layered" and frame.linear_active():
+                raise ProgramError(LAYERED_FORBIDDEN.format(what="a move in machine coordinates"))
             for axis in m.axes:
                 p[axis] = None
             return m
         home = mode in ("home", "home2")
         if home and frame.linear_active():
-            raise ProgramError(FANUC_FORBIDDEN.format(what="a reference return") if frame.rules == "fanuc" else
+            raise ProgramError(LAYERED_FORBIDDEN.format(what="a reference return") if frame.rules == "layered" else
                                "a reference return under a rotated work system is not simulated [?: where its "
                                "intermediate point lies]")
         if _computed(m):

@@ -30,12 +30,12 @@ from ..compensation.tool_table import ENTRY, SIDEWAYS, ToolTable
 from ..context import Context
 from ..dialect import Dialect
 from ..errors import PostprocError, UnsupportedError
-from ..expr import Expr
+from ..ir.expr import Expr
 from .run_state import RUN_KEY, FrameRun
 from ..ir import Block, DataSetting, Motion, Section
 from ..ir.keys import watches_none
 from ..lowering.lower import BlockStep, LoweringStep
-from ..state import MM_PER_INCH
+from ..ir.state import MM_PER_INCH
 
 MEASURED: Final = "tool_entry_at_point"
 """``G10 L10``'s neutral table (the active work system)."""

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Final
 from ..compensation.tool_length import ToolLength
 from ..compensation.tool_table import ENTRY, TABLES, ToolTable
 from ..errors import PostprocError, ProgramError, UnsupportedError
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import Block, DataSetting, Section, ToolLengthOffset
 from ..ir.verbatim import STORED_WORK_OFFSET
 from ..setup.work_offsets import declared_offsets
@@ -137,8 +137,8 @@ def data_setting(ev: Evaluation, block: Block, s: dict[str, Section]) -> bool:
         raise ProgramError(SYMBOLIC)
     if setting.table != "work_offset":
         raise ProgramError("a rotation (R) of an extended work system cannot be evaluated")
-    frame = ev.frame_for("rs274")
-    if ev.frame is not None and frame.rules != "rs274":
+    frame = ev.frame_for("shared_offset")
+    if ev.frame is not None and frame.rules != "shared_offset":
         raise ProgramError("a work system rotation (R) beside another controller's frame")
     frame.set_turn(setting.index, float(turn))
     if active:
@@ -205,9 +205,9 @@ def _declared(ev: Evaluation, system: int, axis: str) -> float | None:
 
 
 def _turn(ev: Evaluation) -> float:
-    """The active work system's XY rotation (rs274 ``G10 L2 R``, degrees); 0 under other rules."""
+    """The active work system's XY rotation (shared_offset rules: ``G10 L2 R``, degrees); 0 under other rules."""
     frame = ev.frame
-    if frame is None or frame.rules != "rs274":
+    if frame is None or frame.rules != "shared_offset":
         return 0.0
     return frame.turns.get(frame.work, 0.0)
 
@@ -234,7 +234,7 @@ def measured_in_frame(ev: Evaluation, setting: DataSetting) -> DataSetting:
                                "rotation of the program's own: that system's origin is the machine's, not known here")
     frame = ev.frame
     assert frame is not None
-    if frame.rules != "rs274":
+    if frame.rules != "shared_offset":
         raise UnsupportedError("a tool entry measured where the tool stands under another controller's frame")
     run = ev.reached
     if not run.tools_known or not run.table_known:

@@ -25,7 +25,7 @@ from typing import Callable, Hashable, Iterable
 
 from ..context import ASSUMED_START, Context
 from ..interp.numbers import COMPUTED, numbered_variables
-from ..state import LEFT_START, MM_PER_INCH
+from ..ir.state import LEFT_START, MM_PER_INCH
 from ..ir import Block
 from .run_state import RUN_KEY, FrameRun
 
@@ -43,18 +43,18 @@ class FrameReadings:
         return run if isinstance(run, FrameRun) else None
 
     def origin_applied(self) -> bool | None:
-        """The shared G52/G92 offset (rs274 rules) is in force; None where the frame is not evaluated."""
+        """The shared G52/G92 offset (shared_offset rules) is in force; None where the frame is not evaluated."""
         run = self._run()
         if run is None:
             return None
-        return run.frame is not None and run.frame.rules == "rs274" and run.frame.applied
+        return run.frame is not None and run.frame.rules == "shared_offset" and run.frame.applied
 
     def origin_parameter(self, axis: str) -> float | None:
         """The offset's stored value on ``axis`` (what G92.3 restores: kept by G92.2, cleared by G92.1)."""
         run = self._run()
         if run is None:
             return None
-        if run.frame is None or run.frame.rules != "rs274":
+        if run.frame is None or run.frame.rules != "shared_offset":
             return 0.0
         return run.frame.saved.get(axis, 0.0)
 
@@ -125,7 +125,7 @@ class FrameReadings:
         frame = run.frame
         g5x = tuple(sorted((n, tuple(sorted(v.items()))) for n, v in run.g5x.items()))
         point = (tuple(sorted(run.p.items())), tuple(sorted(run.unsettled)), run.scale, run.cutter)
-        if frame is None or frame.rules != "rs274":
+        if frame is None or frame.rules != "shared_offset":
             return (run.work, g5x, point)
         return (run.work, g5x, frame.applied, tuple(sorted(frame.saved.items())), tuple(sorted(frame.turns.items())),
                 point)
@@ -133,7 +133,7 @@ class FrameReadings:
     def work_rotation(self, index: int) -> float | None:
         """Work system ``index``'s XY rotation where the program set it (``G10 L2 R``)."""
         run = self._run()
-        if run is None or run.frame is None or run.frame.rules != "rs274":
+        if run is None or run.frame is None or run.frame.rules != "shared_offset":
             return None
         return run.frame.turns.get(index)
 

@@ -13,12 +13,12 @@ streamed before the first construct) is not seen here.
 
 from __future__ import annotations
 
-from ..control import (
+from ..interp.control import (
     Do, DoWhile, EndFor, EndIf, EndRepeat, EndSwitch, EndWhile, For, Goto, GotoLabel, If, Repeat, SubEnd, SubStart,
     Switch, Until, While,
 )
 from ..errors import ProgramError
-from ..expr import Num
+from ..ir.expr import Num
 from ..ir import Section
 
 _OPENING = (If, While, Do, For, Repeat, Switch, SubStart)

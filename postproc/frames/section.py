@@ -3,8 +3,8 @@
 Neutral, as the rest of the IR: ``kind`` says "local offset" or "rotation", never "G52" or "G68". The
 words are those the command takes, by letter, in program units (an angle in degrees): an axis letter
 is an offset, a centre or a mirror line on that axis; ``R`` an angle; ``P`` a common scale factor and
-``I J K`` per-axis factors. ``rules`` names whose semantics the command has ('fanuc', 'rs274', 'isg' or 'chain', see
-``postproc.frames.frame``). ``family`` and ``text`` keep the command as written, for a target of the same
+``I J K`` per-axis factors. ``rules`` names the rule set the command follows ('layered', 'shared_offset', 'rotate_first' or 'chain',
+named after what they do, see ``postproc.frames.frame``; each dialect's reading names its controller's). ``family`` and ``text`` keep the command as written, for a target of the same
 family that runs it natively (``postproc.frames.lowering``).
 
 Kinds (what each does is in ``postproc.frames.frame``):
@@ -28,7 +28,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any, Final
 
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import Section
 from ..xmlio import XFactory, computed_value, lxml_etree
 
@@ -39,8 +39,16 @@ KINDS: Final = frozenset(("local", "origin", "origin_clear", "origin_suspend", "
                           "rotate_off", "scale", "scale_off", "mirror", "mirror_off", "polar", "polar_off", "local_add",
                           "rotate_add", "scale_add", "mirror_add"))
 """Every kind of frame change the IR models."""
-RULES: Final = frozenset(("fanuc", "rs274", "chain", "isg"))
-"""The semantics a frame change may have (``postproc.frames.frame``)."""
+LAYERED: Final = "layered"
+"""Mirror, scaling, rotation about their centres, then the local offset and the G92 shift (Fanuc's)."""
+SHARED_OFFSET: Final = "shared_offset"
+"""One offset G52 and G92 share, with its parameters; each work system's XY rotation (RS274/NGC's)."""
+ROTATE_FIRST: Final = "rotate_first"
+"""The rotation acts on the programmed coordinates before any offset (ISG's)."""
+CHAIN: Final = "chain"
+"""A programmable frame each command replaces or extends (SINUMERIK's)."""
+RULES: Final = frozenset((LAYERED, SHARED_OFFSET, ROTATE_FIRST, CHAIN))
+"""The rule sets a frame change may follow (``postproc.frames.frame``), named after what they do."""
 
 
 class FrameChange(Section):

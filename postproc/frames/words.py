@@ -12,7 +12,7 @@ LINEAR: Final = frozenset("XYZUVW")
 COMPUTED: Final = "a computed word under a coordinate frame (the frame is evaluated into the coordinates here)"
 SYMBOLIC: Final = ("a coordinate frame in a program kept symbolically (it would be evaluated in the order of the "
                    "text, not of the run)")
-FANUC_FORBIDDEN: Final = "{what} while coordinate rotation, scaling or a mirror image is on cannot be run"
+LAYERED_FORBIDDEN: Final = "{what} while coordinate rotation, scaling or a mirror image is on cannot be run"
 """[K] Fanuc 0i-MF and Siemens' ISO-dialect manual 3.2: no reference return and no coordinate system command
 (local, machine or work coordinates, coordinate setting) in these modes."""
 SWAPPED: Final = {"left": "right", "right": "left"}

@@ -5,9 +5,9 @@ steps to ask a target. A build of a grbl-family controller chooses its features 
 
 from __future__ import annotations
 
-from postproc.arc_end import SPIRAL, ArcEndRule
+from postproc.geometry.arc_end import SPIRAL, ArcEndRule
 from postproc.dialect import Dialect
-from postproc.state import MM_PER_INCH
+from postproc.ir.state import MM_PER_INCH
 from postproc.setup.machine_setup import MachineSetup
 
 

@@ -29,7 +29,7 @@ from typing import Callable, Final
 
 from mypy_extensions import mypyc_attr
 
-from postproc.comments import CommentSyntax
+from postproc.syntaxes.comments import CommentSyntax
 
 GRBL_LINE_BUFFER_SIZE: Final = 80
 """grbl 1.1's ``LINE_BUFFER_SIZE`` (``protocol.h``): at most 79 characters of a line are kept [V]."""

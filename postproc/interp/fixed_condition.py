@@ -19,10 +19,10 @@ from __future__ import annotations
 
 from typing import Callable, Iterator
 
-from ..control import (ASSIGN, CONTROL, Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndFor, EndIf,
+from .control import (ASSIGN, CONTROL, Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndFor, EndIf,
                        EndRepeat, EndSwitch, EndWhile, For, If, IfThen, ModalCallCancel, Repeat, Switch, Case,
                        Default, Until, While)
-from ..expr import Binary, Expr, Func, Num, Unary, Var, VarKey
+from ..ir.expr import Binary, Expr, Func, Num, Unary, Var, VarKey
 from ..ir import Block
 from .store import Program
 

@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-from ..expr import Value
+from ..ir.expr import Value
 from ..ir import Block
-from ..source_map import CallSite, Origin
+from ..ir.source_map import CallSite, Origin
 from .store import Program
 
 

@@ -24,17 +24,17 @@ from __future__ import annotations
 
 from typing import Iterator
 
-from ..control import (
+from .control import (
     ASSIGN, CONTROL, LABEL, GotoLabel, Assign, Break, Call, Case, Continue, Default, Do, DoWhile, Else, ElseIf, EndFor, EndIf,
     EndRepeat, EndSwitch, EndWhile, For, Goto, If, IfThen, ModalCall, ModalCallCancel, Repeat, Return, SubEnd,
     SubStart, Switch, Until, While,
 )
 from ..errors import PostprocError, ProgramError
-from ..evaluation import evaluate, evaluate_number
-from ..expr import EvalError, Expr, Value
-from ..evaluation import var_key
+from .evaluation import evaluate, evaluate_number
+from ..ir.expr import EvalError, Expr, Value
+from .evaluation import var_key
 from ..ir import Block, Comments
-from ..source_map import CallSite, ExecutedBlock, Origin
+from ..ir.source_map import CallSite, ExecutedBlock, Origin
 from .frame import Frame
 from .host import Interrupt
 from .store import Program, source_text

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from typing import Iterable, Iterator
 
-from ..expr import EvalError
+from ..ir.expr import EvalError
 from ..ir import Block
 from .variables import VariablesFactory
 

@@ -5,10 +5,10 @@ module has one job."""
 
 from __future__ import annotations
 
-from ..control import ModalCall
+from .control import ModalCall
 from ..errors import Location, PostprocError, ProgramError
-from ..evaluation import evaluate, evaluate_number
-from ..expr import EvalError, Expr, Value
+from .evaluation import evaluate, evaluate_number
+from ..ir.expr import EvalError, Expr, Value
 from ..ir import Block
 from ..setup.machine_setup import Limits
 from .frame import Frame

@@ -4,7 +4,7 @@ A ``Program`` is one file's blocks with their index: sequence numbers -> positio
 loop heads <-> ends, if-chains, subprogram definitions. The ``ProgramStore`` holds the main program and
 the library programs it loaded, lazily, by subprogram name.
 
-Subprogram names (``postproc.control``): the program number as decimal text (``"2000"``) or the o-word
+Subprogram names (``postproc.interp.control``): the program number as decimal text (``"2000"``) or the o-word
 name with its brackets (``"<probe>"``). A definition is either a ``SubStart`` ... ``SubEnd`` pair
 (LinuxCNC; indexed wherever it stands in the file) or a ``ProgramStart`` after the main program's end
 (Fanuc ``O2000`` after ``M30``: the body runs to its return, the next program start or a tape mark).
@@ -14,10 +14,10 @@ from __future__ import annotations
 
 from typing import Callable
 
-from ..control import CONTROL, LABEL
+from .control import CONTROL, LABEL
 from ..errors import ProgramError
 from ..ir import Block
-from ..source_map import locate
+from ..ir.source_map import locate
 from .rules import STORED_PROGRAMS, SubprogramRules
 from .structure import Structure, source_text
 

@@ -9,7 +9,7 @@ the dialect's ``SubprogramRules`` give each number one program), and, at the end
 closed (``WHILE [..] DO1`` without ``END1``: Fanuc's DO and END must pair one to one, alarm PS0124 [K]).
 The streaming step (``ProgramSyntax``) runs it over every program that is read, with one more check
 (``StreamCheck``): an expression a part of which fails whatever the program does (``1/0``, ``SQRT[-4]``,
-``LN[0]``, ``#1/0``: its operands constants, ``postproc.evaluation.certain_failure``) is refused where it
+``LN[0]``, ``#1/0``: its operands constants, ``postproc.interp.evaluation.certain_failure``) is refused where it
 is read, not kept symbolically for a controller to alarm on; the program store
 (``Program``) also keeps what it matched (``pairs``, ``chains``) to run the program. It holds only the
 open constructs and the names defined, never the blocks.
@@ -19,16 +19,16 @@ from __future__ import annotations
 
 from typing import Callable, Iterator
 
-from ..control import (
+from .control import (
     ASSIGN, CONTROL, Assign, Break, Call, Case, Continue, ControlSection, Default, Do, DoWhile, Else, ElseIf,
     EndFor, EndIf, EndRepeat, EndSwitch, EndWhile, For, If, IfThen, ModalCall, Repeat, SubEnd, SubStart, Switch,
     Until, While,
 )
 from ..errors import Location, PostprocError, ProgramError
-from ..evaluation import certain_failure
-from ..expr import Expr
+from .evaluation import certain_failure
+from ..ir.expr import Expr
 from ..ir import Block, Section, one_line
-from ..source_map import locate
+from ..ir.source_map import locate
 from .rules import SubprogramRules
 
 _HEADS: dict[type[Section], type[Section]] = {EndWhile: While, DoWhile: Do, EndRepeat: Repeat, EndFor: For,

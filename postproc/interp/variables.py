@@ -2,7 +2,7 @@
 
 The interpreter names no family: each dialect's ``ProgramSyntax.VARIABLES`` brings its own table (the RS274
 family's Custom Macro B and LinuxCNC models are in ``postproc.rs274.variables``, ISG's and Fagor's in their
-dialects). A table reads and writes the ``Env`` of ``postproc.evaluation.evaluate`` and keeps the call levels.
+dialects). A table reads and writes the ``Env`` of ``postproc.interp.evaluation.evaluate`` and keeps the call levels.
 Reading or writing a variable only the machine knows is an ``EvalError`` naming it (``MACHINE_ONLY``): such a
 program cannot be simulated or flattened.
 """
@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from typing import Callable, Hashable, Protocol, runtime_checkable
 
-from ..expr import Arithmetic, EvalError, Vacancy, Value, VarKey
+from ..ir.expr import Arithmetic, EvalError, Vacancy, Value, VarKey
 
 MACHINE_ONLY = "is known only to the machine: the program cannot be simulated or flattened"
 

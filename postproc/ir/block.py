@@ -7,7 +7,7 @@ from mypy_extensions import mypyc_attr
 
 from typing import TYPE_CHECKING, Any, ClassVar, Final
 
-from ..expr import Expr, expr_from_xml
+from .expr import Expr, expr_from_xml
 from ..xmlio import DEFAULT, XFactory, XmlNode, decode, encode, lxml_etree, restore_slots, slot_state, where
 from .section import Section
 

@@ -7,7 +7,7 @@ from mypy_extensions import mypyc_attr
 
 from typing import TYPE_CHECKING, Any
 
-from ..expr import Expr
+from .expr import Expr
 from ..xmlio import XAttr, lxml_etree, where
 from .section import Section
 
@@ -158,7 +158,7 @@ class SpindleSpeed(Section):
 class SpindleControl(Section):
     """Spindle on clockwise ('cw'), counter-clockwise ('ccw') or 'stop'. ``before_motion``: a stop that
     the reading controller makes before its block's motion (the RS274/NGC order of execution), where
-    the neutral order (``postproc.event_order``) makes it after."""
+    the neutral order (``postproc.ir.event_order``) makes it after."""
 
     XNAME = "SpindleControl"
 

@@ -7,7 +7,7 @@ from mypy_extensions import mypyc_attr
 
 from typing import TYPE_CHECKING, Any, Callable
 
-from ..expr import Expr
+from .expr import Expr
 from ..xmlio import DEFAULT, computed_value, lxml_etree
 from .section import Section, axes_from_xml, axes_to_xml
 

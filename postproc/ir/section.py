@@ -7,7 +7,7 @@ from mypy_extensions import mypyc_attr
 
 from typing import TYPE_CHECKING, Any, ClassVar
 
-from ..expr import Expr
+from .expr import Expr
 from ..xmlio import XmlNode, computed_value, lxml_etree
 
 if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)

@@ -8,7 +8,7 @@ from mypy_extensions import mypyc_attr
 
 from typing import TYPE_CHECKING, Any, Final
 
-from ..expr import Expr
+from .expr import Expr
 from ..xmlio import XAttr, lxml_etree
 from .section import Section, axes_from_xml, axes_to_xml
 

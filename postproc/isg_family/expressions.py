@@ -26,7 +26,7 @@ refused as ambiguous, and written ``[-2] ** 2``.
 from __future__ import annotations
 
 from postproc.errors import UnsupportedError
-from postproc.expr import Binary, Expr, Func, Num, Unary, Var
+from postproc.ir.expr import Binary, Expr, Func, Num, Unary, Var
 from postproc.rs274.expressions import MAX_DEPTH, ExprSyntaxError, decimal_end, shallow, skip_blanks
 
 class Unmodelled(ExprSyntaxError):

@@ -12,7 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from postproc.errors import Location, ParseError
-from postproc.expr import Expr, Var
+from postproc.ir.expr import Expr, Var
 from postproc.rs274.expressions import ExprSyntaxError, decimal_end, skip_blanks
 
 from .expressions import parse_expr, parse_word_value

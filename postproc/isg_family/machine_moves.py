@@ -29,7 +29,7 @@ from ..dialect import Dialect
 from ..ir import Block, DistanceMode, MachineCoordinates, Motion
 from ..lowering.lower import BlockStep, LoweringStep
 from ..output.home_position import home_position
-from ..state import ModalState
+from ..ir.state import ModalState
 
 REFERENCE: Final = frozenset(("home", "home2"))
 QUIET: Final = frozenset(("Comments", "Sequence"))

@@ -12,12 +12,12 @@ which is what it means, and which ``untruth`` reads back.
 
 from __future__ import annotations
 
-from postproc.control import (
+from postproc.interp.control import (
     Break, Case, Continue, Default, Do, DoWhile, Else, ElseIf, EndFor, EndIf, EndSwitch, EndWhile, For, Goto,
     GotoLabel, If, Switch, Until, While,
 )
 from postproc.errors import Location, ParseError, UnsupportedError
-from postproc.expr import Binary, Expr, Func, Num, Var
+from postproc.ir.expr import Binary, Expr, Func, Num, Var
 from postproc.ir import Section
 from postproc.rs274.expressions import ExprSyntaxError, skip_blanks
 

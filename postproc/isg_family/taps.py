@@ -1,5 +1,5 @@
 """The rigid tap strokes ``G331 Z.. K.. S..`` (in) and ``G332 Z.. [K..] [S..]`` (out) of ISG and SINUMERIK, read
-into the neutral ``RigidTap`` with its ``stroke`` (``postproc.synchronised_tap``). Both spell and mean them
+into the neutral ``RigidTap`` with its ``stroke`` (``postproc.lowering.synchronised_tap``). Both spell and mean them
 alike, so both readers share this (the ISG and SINUMERIK code tables map them to the motion modes
 ``tap_in``/``tap_out``).
 
@@ -28,9 +28,9 @@ from typing import TYPE_CHECKING, Any, Final
 
 from postproc.context import Context
 from postproc.errors import ProgramError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, Motion
-from postproc.synchronised_tap import RigidTap
+from postproc.lowering.synchronised_tap import RigidTap
 
 if TYPE_CHECKING:
     from postproc.rs274.writer import WordWriter

@@ -43,9 +43,9 @@ from mypy_extensions import mypyc_attr
 from ..compensation.tool_table import ToolTable
 from ..context import Context
 from ..dialect import Dialect
-from ..control import CONTROL
+from ..interp.control import CONTROL
 from ..errors import Location, PostprocError, UnsupportedError
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import Block, CutterCompensation, DataSetting, DistanceMode, Motion, ToolLengthOffset, Units
 from ..ir.keys import watches_none
 from ..lowering.lower import BlockStep, LoweringStep

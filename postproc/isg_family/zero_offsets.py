@@ -14,7 +14,7 @@ import re
 from typing import Final
 
 from postproc.errors import Location, ParseError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, DataSetting, Sequence
 from postproc.ir.verbatim import STORED_WORK_OFFSET
 

@@ -16,7 +16,7 @@ from typing import Iterator, Mapping
 
 from mypy_extensions import mypyc_attr
 
-from ..geometry import arc_sweep, centre_from_radius
+from ..geometry.arcs import arc_sweep, centre_from_radius
 
 MAX_CHORDS = 100_000
 """Most chords one arc becomes: beyond it the tolerance is refused (a 10 m circle at 1 um needs 7,000)."""

@@ -31,16 +31,16 @@ from typing import Final, Iterator
 
 from mypy_extensions import mypyc_attr
 
-from ..arc_end import SPIRAL
+from ..geometry.arc_end import SPIRAL
 from ..context import Context
 from ..dialect import Dialect
 from ..errors import PostprocError, ProgramError, UnsupportedError, UsageError
-from ..event_order import after_motion
-from ..expr import Expr
+from ..ir.event_order import after_motion
+from ..ir.expr import Expr
 from ..ir import Block, CompoundMotion, Motion, Section
 from ..ir.keys import only_move
 from ..numbers import EXACT
-from ..state import MM_PER_INCH, PLANE_AXES, ModalState, changes_nothing
+from ..ir.state import MM_PER_INCH, PLANE_AXES, ModalState, changes_nothing
 from .lower import BlockStep, LoweringStep, run_blocks
 from .arc_geometry import Arc, chord_points, r_centre_error, r_pieces, signed_radius, split
 
@@ -87,7 +87,7 @@ def parse_arc_option(text: str) -> ArcOption:
 @mypyc_attr(allow_interpreted_subclasses=True)
 class SettleArcEnds(LoweringStep):
     """The lowered program with each I/J/K arc written about the centre the source's controller turns it
-    about where that controller moves the programmed one (``postproc.arc_end.START_RADIUS``): the target's
+    about where that controller moves the programmed one (``postproc.geometry.arc_end.START_RADIUS``): the target's
     controller then runs a circle through both ends, the source's path exactly. A pass over the program only
     for such a source; a spiral source whose arc the target's controller would refuse is refused where it is
     read (``postproc.syntaxes.modal_state``, ``TARGET_ARC_END``).

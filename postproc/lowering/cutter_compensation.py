@@ -73,33 +73,48 @@ was ~1.5k instructions a block (``fanuc grbl 0``, compiled). After an error the 
 neither does the second now: a later G41/G42 is the target writer's refusal."""
 
 
-def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+@mypyc_attr(allow_interpreted_subclasses=True)
+class ResolveCutterCompensation(LoweringStep):
     """Lowering step: G41/G42 become the compensated path for a target without cutter compensation,
     where the source dialect's rules are modelled (see the module docstring)."""
-    if ctx.dialect == target.NAME or target.CUTTER_COMPENSATION:
-        return blocks
-    rules: CutterRules | None = ctx.cutter_rules  # none for a program written from the neutral IR
-    if rules is None:
-        why = ctx.run_data.get(RULES_UNKNOWN_KEY)
-        return blocks if why is None else _refuse_unmodelled(blocks, ctx, target, str(why))
-    if ctx.run_data.get(RESOLVED) is target:
-        return blocks  # (the generic step already resolved every G41/G42 for this target)
-    return Resolver(ctx, rules, diameters=_takes_diameters(ctx, target)).run(blocks)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        if ctx.dialect == target.NAME or target.CUTTER_COMPENSATION:
+            return None
+        rules: CutterRules | None = ctx.cutter_rules  # none for a program written from the neutral IR
+        if rules is None:
+            why = ctx.run_data.get(RULES_UNKNOWN_KEY)
+            return None if why is None else RefuseUnmodelled(ctx, target, str(why))
+        if ctx.run_data.get(RESOLVED) is target:
+            return None  # (the generic step already resolved every G41/G42 for this target)
+        return Resolver(ctx, rules, diameters=_takes_diameters(ctx, target)).resolution()
 
 
-def _refuse_unmodelled(blocks: Iterator[Block], ctx: Context, target: type[Dialect], why: str) -> Iterator[Block]:
+resolve_cutter_compensation = ResolveCutterCompensation()
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class RefuseUnmodelled(BlockStep):
     """A G41/G42 from a source whose rules are not modelled, towards a target without compensation: a located
     error naming what is unknown (not that the target cannot express it: it is written as moves where the rules
     are known); the section goes, so the writer does not refuse it a second time."""
-    for block in blocks:
+
+    def __init__(self, ctx: Context, target: type[Dialect], why: str) -> None:
+        super().__init__()
+        self.moves = False  # a block that is only a move has no CutterCompensation section
+        self.ctx = ctx
+        self.target = target
+        self.why = why
+
+    def take(self, block: Block) -> list[Block] | None:
         cc = block.sections.get("CutterCompensation")
         if isinstance(cc, CutterCompensation) and cc.mode != "off":
-            ctx.diagnostics.error(UnsupportedError(
-                f"cutter radius compensation ({cc.mode}) cannot be resolved into moves for {target.NAME}, which has "
-                f"none: {why}", ctx.at(block)))
+            self.ctx.diagnostics.error(UnsupportedError(
+                f"cutter radius compensation ({cc.mode}) cannot be resolved into moves for {self.target.NAME}, "
+                f"which has none: {self.why}", self.ctx.at(block)))
             del block.sections["CutterCompensation"]
             block.changed()
-        yield block
+        return None
 
 
 def _takes_diameters(ctx: Context, target: type[Dialect]) -> bool:

@@ -17,7 +17,7 @@ from mypy_extensions import mypyc_attr
 from ..block_rules import ArcError, arc_centre
 from ..context import Context
 from ..errors import ProgramError
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import Block, DistanceMode, Feed, FeedMode, Motion
 from ..compensation.cutter_radius import Item, Segment
 from ..compensation.rules import CutterRules

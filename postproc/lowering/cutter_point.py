@@ -16,7 +16,7 @@ from mypy_extensions import mypyc_attr
 
 from ..context import Context
 from ..errors import ProgramError, UnsupportedError
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import Block, CompoundMotion, Motion
 from ..compensation.cutter_radius import Item
 from ..compensation.geometry_for import cutter_for

@@ -11,9 +11,9 @@ from typing import Callable, Final, Iterator
 from mypy_extensions import mypyc_attr
 
 from ..context import Context
-from ..control import ASSIGN, CONTROL, LABEL
+from ..interp.control import ASSIGN, CONTROL, LABEL
 from ..errors import PostprocError, ProgramError, UnsupportedError
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import (Block, CompoundMotion, CutterCompensation, DataSetting, DistanceMode, Feed, FeedMode, Motion, Plane,
                   ProgramControl, Section, ToolChange, ToolLengthOffset, ToolSelect, Units, WorkOffset)
 from ..ir.keys import only_move
@@ -22,7 +22,7 @@ from ..compensation.cycle_entry import finishing_entry
 from ..compensation.dynamic import DynamicCutterCompensation
 from ..compensation.nose import TIPS, mirrored
 from ..compensation.rules import CutterRules
-from ..state import PLANE_AXES
+from ..ir.state import PLANE_AXES
 from .cutter_moves import CompensatedMoves
 from .cutter_point import MM_PER_INCH, MOVES, Unresolvable, UnknownHere
 from .rule_trial import STAND_IN_RADIUS, STRETCH_LIMIT, RuleTrial

@@ -20,7 +20,7 @@ from typing import Final
 
 from ..context import Context
 from ..dialect import Dialect
-from ..control import CONTROL
+from ..interp.control import CONTROL
 from ..errors import UnsupportedError
 from ..ir import Block, PathControl
 from .lower import BlockStep, LoweringStep

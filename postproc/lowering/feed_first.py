@@ -8,7 +8,7 @@ from mypy_extensions import mypyc_attr
 
 from ..block_rules import NO_FEED, needs_feed
 from ..context import Context
-from ..control import ASSIGN, CONTROL
+from ..interp.control import ASSIGN, CONTROL
 from ..dialect import Dialect
 from ..errors import ProgramError
 from ..ir import Block

@@ -27,10 +27,10 @@ from ..block_rules import ArcError, arc_centre
 from ..context import Context
 from ..dialect import INVERSE_TIME_KEY, Dialect
 from ..errors import UnsupportedError
-from ..expr import Expr
-from ..geometry import arc_sweep
+from ..ir.expr import Expr
+from ..geometry.arcs import arc_sweep
 from ..ir import Block, Feed, FeedMode, Motion
-from ..state import MM_PER_INCH, PLANE_AXES
+from ..ir.state import MM_PER_INCH, PLANE_AXES
 
 LINEAR: Final = ("X", "Y", "Z")
 ROTARY: Final = frozenset("ABCUVW")

@@ -58,7 +58,7 @@ from mypy_extensions import mypyc_attr
 from ..context import Context
 from ..dialect import Dialect
 from ..errors import Location, PostprocError, UnsupportedError
-from ..expr import Binary, Expr, Num, Var
+from ..ir.expr import Binary, Expr, Num, Var
 from ..ir import (Block, CutterCompensation, DataSetting, DistanceMode, Motion, Section, ToolLengthOffset, Units,
                   WorkOffset)
 from ..ir.keys import watches_none

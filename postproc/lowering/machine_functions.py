@@ -5,7 +5,7 @@ reports the code with its location.
 
 A code whose action is ``rigid-tap`` (Fanuc ``M29 S..``) is never left out here: it makes the tap cycles
 after it follow the spindle, and the same cycle fed without the spindle in step breaks the tap. Towards a
-target that writes a synchronised tap (LinuxCNC's G33.1) ``postproc.synchronised_tap`` has already taken it
+target that writes a synchronised tap (LinuxCNC's G33.1) ``postproc.lowering.synchronised_tap`` has already taken it
 (its taps carry its meaning); towards any other family it is refused in either mode, by
 ``refused_rigid_tap``'s message.
 

@@ -30,10 +30,10 @@ from ..compensation.tool_table import ToolTable
 from ..context import Context
 from ..dialect import Dialect
 from ..errors import UnsupportedError
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import Block, DataSetting, DistanceMode, Motion, ToolLengthOffset, ToolSelect, Units, WorkOffset
 from ..setup.work_offsets import declared_offsets, offset_beyond_frame
-from ..state import MM_PER_INCH
+from ..ir.state import MM_PER_INCH
 from .lower import BlockStep, LoweringStep
 
 FRAME_UNKNOWN: Final = frozenset(("CoordinateSet", "FrameChange"))

@@ -19,7 +19,7 @@ from typing import Final
 from mypy_extensions import mypyc_attr
 
 from ..context import Context
-from ..control import CONTROL, SubEnd, SubStart, Return
+from ..interp.control import CONTROL, SubEnd, SubStart, Return
 from ..dialect import Dialect
 from ..ir import Block, Comments, Section, one_line
 from .lower import BlockStep, LoweringStep

@@ -29,7 +29,7 @@ from typing import TYPE_CHECKING, Any, ClassVar, Iterable, Iterator
 
 from ..errors import ConfigError, Diagnostics, ErrorLevel, Location, PostprocError, UsageError
 from ..ir import Block, Section
-from ..state import ModalState
+from ..ir.state import ModalState
 from ..xmlio import XAttr
 
 if TYPE_CHECKING:
@@ -51,7 +51,7 @@ _MODAL = ("units", "distance", "plane", "feed_mode", "work_offset", "return_leve
 
 class GeneratedText(Section):
     """Text a set-up template wrote in place of a block (or before it): written as it is, and marked
-    generated in the output map (``postproc.source_map.OutputMap``)."""
+    generated in the output map (``postproc.ir.source_map.OutputMap``)."""
 
     XNAME = KEY = "Generated"
     __slots__ = ("text", "template")

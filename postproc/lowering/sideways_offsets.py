@@ -30,13 +30,13 @@ from typing import Final
 
 from ..compensation.tool_table import ENTRY, SIDEWAYS
 from ..context import Context
-from ..control import ASSIGN, CONTROL
+from ..interp.control import ASSIGN, CONTROL
 from ..dialect import Dialect
 from ..errors import UnsupportedError
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import Block, Comments, CompoundMotion, DataSetting, Motion, Section
-from ..state import MM_PER_INCH
-from ..synchronised_tap import RigidTap
+from ..ir.state import MM_PER_INCH
+from .synchronised_tap import RigidTap
 from .lower import BlockStep, LoweringStep
 
 _UNREWRITTEN: Final = {"CannedCycle": "a canned cycle kept for the target", "FrameChange": "a frame command",

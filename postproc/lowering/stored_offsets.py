@@ -23,7 +23,7 @@ from ..dialect import STORED_OFFSETS_KEY, Dialect
 from ..errors import UnsupportedError
 from ..ir import Block, Comments, DataSetting
 from ..ir.verbatim import STORED_WORK_OFFSET
-from ..state import ModalState, changes_nothing
+from ..ir.state import ModalState, changes_nothing
 
 
 def hold_stored_offsets(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:

@@ -23,7 +23,7 @@ nested spelling. What has the shape of a construct is written as it:
 * ISG only (``nest_jumps_keeping_equality``): a jump back to a named label, both outside every loop, stays
   the jump it is (``$GOTO [NAME]``: the label went by, and a label is on one block);
 * LinuxCNC only (``nest_forward_jumps``): an exact equality in a condition. LinuxCNC's ``EQ``/``NE`` count
-  values closer than 1e-4 as equal (``postproc.evaluation``), its ``LE``/``GE``/``LT``/``GT`` are exact [V:
+  values closer than 1e-4 as equal (``postproc.interp.evaluation``), its ``LE``/``GE``/``LT``/``GT`` are exact [V:
   rs274, same module], so ``a == b`` is written ``[a LE b] AND [a GE b]`` and ``a <> b``
   ``[a LT b] OR [a GT b]``: the same value for every number.
 
@@ -37,15 +37,15 @@ from typing import Final, Iterator
 
 from mypy_extensions import mypyc_attr
 
-from ..conditions import negated
+from ..interp.conditions import negated
 from ..context import Context
-from ..control import (
+from ..interp.control import (
     CONTROL, Break, Case, Default, Do, DoWhile, Else, ElseIf, EndFor, EndIf, EndRepeat, EndSwitch, EndWhile, For, Goto,
     GotoLabel, If, Repeat, SubEnd, SubStart, Switch, Until, While,
 )
 from ..dialect import Dialect
 from ..errors import Location, UnsupportedError
-from ..expr import Binary, Expr, Func, Num, Unary
+from ..ir.expr import Binary, Expr, Func, Num, Unary
 from ..ir import Block, Section
 from .lower import BlockStep, LoweringStep
 

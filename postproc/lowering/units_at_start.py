@@ -19,11 +19,11 @@ programs its units there or before needs nothing; a copy to the same dialect pas
 from __future__ import annotations
 
 from ..context import Context
-from ..control import SubEnd, SubStart
+from ..interp.control import SubEnd, SubStart
 from ..dialect import Dialect
 from ..ir import Block, Units
 from .lower import BlockStep, LoweringStep
-from ..state import ModalState
+from ..ir.state import ModalState
 from ..syntaxes.power_on_units import HEADER, PLAIN
 
 

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from mypy_extensions import mypyc_attr
 
-from ..comments import CommentSyntax
+from ..syntaxes.comments import CommentSyntax
 
 
 def size(text: str) -> int:

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from typing import Any, Final, Mapping
 
-from ..event_order import MOVING
+from ..ir.event_order import MOVING
 from ..ir import Block
 
 _STRAIGHT: Final = frozenset(("rapid", "linear"))

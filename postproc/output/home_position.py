@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from ..ir import Motion
 from ..setup.machine_setup import MachineSetup
-from ..state import MM_PER_INCH
+from ..ir.state import MM_PER_INCH
 
 
 def home_position(setup: MachineSetup, axis: str, inch: bool) -> float | None:

@@ -28,7 +28,7 @@ from typing import TYPE_CHECKING, Callable, Protocol
 
 from mypy_extensions import mypyc_attr
 
-from ..control import CONTROL
+from ..interp.control import CONTROL
 from ..errors import ConfigError, Location, ProgramError
 from ..ir import Block
 

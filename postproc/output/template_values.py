@@ -4,7 +4,7 @@ A template is the integrator's code; what its ``{{ ... }}`` write comes from els
 file's name, ``--define`` values, a comment of the program, the set-up's name - and is text, not code
 (a file named ``x) G0 X-999. (.nc`` in ``(PROGRAM {{ program }})`` must not move the machine). So
 the sandbox's ``finalize`` (``mark``) wraps the text of every ``{{ ... }}`` in two private-use
-characters, and ``seal`` then, knowing the target's comment syntax (``postproc.comments``):
+characters, and ``seal`` then, knowing the target's comment syntax (``postproc.syntaxes.comments``):
 
 * makes each marked text safe inside a comment (``CommentSyntax.inside``: no parenthesis, line break
   or character the controller acts on);
@@ -23,7 +23,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
-from ..comments import CommentSyntax
+from ..syntaxes.comments import CommentSyntax
 from ..errors import ConfigError, Location
 
 OPEN = "\ue000"

@@ -20,7 +20,7 @@ from jinja2.exceptions import SecurityError
 from jinja2.sandbox import SandboxedEnvironment
 
 from .bounded import MEMORY_LIMIT, run_bounded
-from ..comments import CommentSyntax
+from ..syntaxes.comments import CommentSyntax
 from ..errors import ConfigError, Location
 from .template_values import CLOSE, OPEN, mark, scrub, seal
 

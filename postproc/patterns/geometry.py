@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 
 from postproc.records import record
-from postproc.state import PLANE_AXES
+from postproc.ir.state import PLANE_AXES
 
 from .section import HolePattern
 

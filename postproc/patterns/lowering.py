@@ -23,7 +23,7 @@ from postproc.cycles.lowering import cancels, expands
 from postproc.cycles.section import CannedCycle
 from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, Comments, CompoundMotion, Motion, Section
 
 from .geometry import first_point, pattern_hops

@@ -9,7 +9,7 @@ A dialect's reader builds the ``HolePattern`` from its words (the geometry) and 
 
 from __future__ import annotations
 
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 
 from postproc.context import Context
 from postproc.cycles.expansion import CycleExpansion, TooManyMoves
@@ -17,7 +17,7 @@ from postproc.cycles.resolve import active_cycle
 from postproc.cycles.section import CannedCycle
 from postproc.errors import Location, ProgramError
 from postproc.ir import Block, CompoundMotion, Feed, Motion, Section
-from postproc.state import PLANE_AXES
+from postproc.ir.state import PLANE_AXES
 
 from .geometry import Hop, first_point, pattern_hops
 from .section import HolePattern, total_points

@@ -4,7 +4,7 @@ machining, DIALECTS.md §2.3), in neutral terms.
 The section says what the pattern is (a line, a parallelogram's perimeter, a grid, a full circle or an
 arc of one), never how a dialect spells it: a dialect's reader maps its words to these fields, and a
 writer whose controller runs patterns natively writes them back. All lengths are in program units, in
-the plane of the pattern (``plane``: first and second plane axis, ``postproc.state.PLANE_AXES``);
+the plane of the pattern (``plane``: first and second plane axis, ``postproc.ir.state.PLANE_AXES``);
 angles are in degrees, counter-clockwise from the first plane axis to the second.
 
 Point 1 is the first point, where the tool stands when the pattern starts (the controller machined it
@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 
 from postproc.cycles.section import CannedCycle
 from postproc.ir import Section
-from postproc.state import PLANE_AXES
+from postproc.ir.state import PLANE_AXES
 from postproc.xmlio import XAttr, lxml_etree
 
 if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)

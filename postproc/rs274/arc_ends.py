@@ -1,11 +1,11 @@
 """How the RS274 family's controllers judge and run an I/J/K arc whose end lies off its circle
-(``postproc.arc_end``): the rules the Fanuc-family and RS274/NGC-family dialects declare as ``ARC_END``."""
+(``postproc.geometry.arc_end``): the rules the Fanuc-family and RS274/NGC-family dialects declare as ``ARC_END``."""
 
 from __future__ import annotations
 
 from typing import Final
 
-from ..arc_end import SPIRAL, ArcEndRule
+from ..geometry.arc_end import SPIRAL, ArcEndRule
 
 FANUC_ARC_END: Final = ArcEndRule(metric=0.01, inch=0.001, runs=SPIRAL)
 """Fanuc: parameter 3410 (tolerance of arc radius) limits the difference of the start and end radii; past

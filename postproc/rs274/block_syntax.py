@@ -20,7 +20,7 @@ from mypy_extensions import mypyc_attr
 from typing import Any, ClassVar, Mapping, Final
 
 from postproc.errors import ParseError, ProgramError
-from postproc.expr import Binary, Expr, Num
+from postproc.ir.expr import Binary, Expr, Num
 from postproc.ir import (
     Block, MachineFunction, Coolant, CutterCompensation, CycleCall, CycleCancel, DistanceMode, Dwell, Feed, FeedMode,
     MachineCoordinates, Motion, NativeCode, PathControl, Plane, ProgramControl, ReturnLevel,
@@ -28,8 +28,8 @@ from postproc.ir import (
     WorkOffset,
 )
 from postproc.context import Context
-from postproc.frames.reading import read_frame
-from postproc.syntax import Syntax
+from .frame_words import read_frame
+from postproc.syntaxes.syntax import Syntax
 
 from .codes import CodeTable, g_key
 from .machine_codes import Defaults, machine_table
@@ -85,8 +85,8 @@ class WordBlockSyntax(Syntax):
     """``K`` in a cycle block is a whole repeat count (Fanuc); False: a real number of the cycle's own
     (Fagor's dwell)."""
     FRAME_RULES: ClassVar[str] = ""
-    """Whose semantics the table's frame codes (kind ``frame``) have: 'fanuc' or 'rs274'
-    (``postproc.frames``); '' where the table has none."""
+    """The rule set the table's frame codes (kind ``frame``) follow (``postproc.frames.section``: ``LAYERED``,
+    ``SHARED_OFFSET``, ``ROTATE_FIRST``); '' where the table has none."""
     WHOLE_SPINDLE_SPEED: ClassVar[bool] = False
     """S takes a whole number: a written ``S1000.5`` (or ``S1000.``) is a located error, as the controller's
     alarm (``Dialect.WHOLE_SPINDLE_SPEED`` of the dialect whose syntax this is); a computed S reaches here

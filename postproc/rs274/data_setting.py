@@ -8,7 +8,7 @@ from typing import Any, ClassVar, Final, Mapping, Protocol
 
 from postproc.context import Context
 from postproc.errors import ProgramError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, DataSetting, NativeCode
 
 from .codes import CodeTable, g_key

@@ -17,7 +17,7 @@ from __future__ import annotations
 from dataclasses import field
 
 from ..errors import Location, ParseError, UnsupportedError
-from ..expr import MAX_XML_DEPTH, Binary, Expr, Func, Num, Unary, Var, nests_deeper
+from ..ir.expr import MAX_XML_DEPTH, Binary, Expr, Func, Num, Unary, Var, nests_deeper
 from ..records import record
 
 MAX_DEPTH = 64
@@ -401,7 +401,7 @@ def parse_condition(text: str, pos: int, spelling: ExprSpelling) -> tuple[int, E
 
 def shallow(pos: int, parsed: tuple[int, Expr]) -> tuple[int, Expr]:
     """``parsed`` (an expression read from ``pos``) if it is at most ``MAX_XML_DEPTH`` levels deep, counting
-    each operator of a chain (``postproc.expr.nests_deeper``); else a located error. Every reader's
+    each operator of a chain (``postproc.ir.expr.nests_deeper``); else a located error. Every reader's
     expressions pass here."""
     if nests_deeper(parsed[1]):
         raise ExprSyntaxError(f"expression nested deeper than {MAX_XML_DEPTH} levels (each operator of a chain "

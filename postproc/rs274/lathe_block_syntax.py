@@ -18,9 +18,9 @@ from __future__ import annotations
 from typing import Any
 
 from postproc.errors import ParseError, ProgramError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, CycleCall, Feed, Motion, SpindleSpeed, ToolSelect
-from postproc.lathe_sections import CoordinateSet, SpindleClamp, SpindleMode
+from postproc.ir.lathe_sections import CoordinateSet, SpindleClamp, SpindleMode
 from postproc.context import Context
 
 from .block_syntax import WordBlockSyntax, col_of_word

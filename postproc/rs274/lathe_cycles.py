@@ -26,11 +26,11 @@ from postproc.cycles.lathe_expansion import (expand, finishing_split, nose_shape
                                              to_sections)
 from postproc.cycles.lathe_lowering import NOSE_PROFILE, THREAD_CHAMFER
 from postproc.errors import PostprocError, ProgramError, UnsupportedError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import (Block, CompoundMotion, CutterCompensation, CycleCall, DataSetting, MachineFunction, Motion,
                          NativeCode, Sequence)
-from postproc.lathe_sections import InProfile, LatheCycle
-from postproc.syntax import Syntax
+from postproc.ir.lathe_sections import InProfile, LatheCycle
+from postproc.syntaxes.syntax import Syntax
 
 from .lathe_words import defaults, read_cycle
 

@@ -27,7 +27,7 @@ from typing import Any, Final
 
 from postproc.context import Context
 from postproc.errors import ProgramError, UnsupportedError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, DataSetting
 
 GEOMETRY: Final = "lathe_offset"

@@ -12,7 +12,7 @@ from postproc.context import Context
 from postproc.cycles.lathe_expansion import to_sections
 from postproc.cycles.turning.profile import TurnMove
 from postproc.errors import ProgramError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, CompoundMotion, Feed, Motion
 
 Refusal = Callable[..., ProgramError]

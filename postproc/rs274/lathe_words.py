@@ -17,7 +17,7 @@ from typing import Any
 from postproc.context import Context
 from postproc.errors import ParseError, ProgramError
 from postproc.ir import Block
-from postproc.lathe_sections import LatheCycle
+from postproc.ir.lathe_sections import LatheCycle
 from postproc.setup.record import values
 
 DEFAULTS_KEY = "lathe_words.defaults"

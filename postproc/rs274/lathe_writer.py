@@ -14,9 +14,9 @@ from __future__ import annotations
 from typing import Any, ClassVar, Iterable, Iterator, TextIO
 
 from ..errors import UnsupportedError
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import Block, Motion, Section
-from ..lathe_sections import LatheCycle, ThreadLead
+from ..ir.lathe_sections import LatheCycle, ThreadLead
 from .lathe_words import FIRST_WORDS, ONE_WORDS, SECOND_WORDS
 from .writer import WordWriter
 

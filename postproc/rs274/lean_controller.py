@@ -31,13 +31,13 @@ from mypy_extensions import mypyc_attr
 
 from ..context import Context
 from ..dialect import Dialect
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import (
     Block, Comments, CompoundMotion, DistanceMode, Motion, Plane, ProgramControl, Section, SpindleControl,
     ToolLengthOffset, ToolSelect,
 )
 from ..ir.keys import watches_none
-from ..state import PLANE_AXES
+from ..ir.state import PLANE_AXES
 from .order_of_execution import split_stops_after_motion, stops_after_motion
 from ..lowering.lower import BlockStep, LoweringStep
 
@@ -251,7 +251,7 @@ def _pause(block: Block, ctx: Context, tool: int | Expr, spindle: str) -> Block:
     if running:
         pause["SpindleControl"] = SpindleControl("stop")
     # (a stopped spindle's M5 stays with the rest of the block, where the source runs it: after the tool
-    # change and after the block's coolant on, ``postproc.event_order``)
+    # change and after the block's coolant on, ``postproc.ir.event_order``)
     pause["ProgramControl"] = ProgramControl("stop")
     note = f"TOOL CHANGE: LOAD T{tool}, THEN CYCLE START"
     comments = sections.get("Comments")

@@ -8,7 +8,7 @@ from typing import Any, ClassVar, Final, Protocol
 
 from postproc.context import Context
 from postproc.errors import ProgramError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, ToolLengthOffset
 
 from .words import AXIS_LETTERS, UPPER, col_of_word

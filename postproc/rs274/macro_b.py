@@ -10,9 +10,9 @@ Errors are ``ExprSyntaxError``s with the 0-based offset in the given text.
 
 from __future__ import annotations
 
-from ..control import Assign, EndWhile, Goto, IfThen, While
+from ..interp.control import Assign, EndWhile, Goto, IfThen, While
 from ..errors import UnsupportedError
-from ..expr import Expr, Num, Var
+from ..ir.expr import Expr, Num, Var
 from ..ir import Section
 from .expressions import (
     FANUC_SPELLING, ExprSyntaxError, parse_condition, parse_expr, parse_word_value, skip_blanks,

@@ -27,14 +27,14 @@ import copy
 from dataclasses import dataclass, field
 from typing import Iterator
 
-from ..conditions import negated, truth
+from ..interp.conditions import negated, truth
 from ..context import Context
-from ..control import (
+from ..interp.control import (
     CONTROL, Do, DoWhile, Else, ElseIf, EndIf, Goto, GotoLabel, If, Until, While,
 )
 from ..dialect import Dialect
 from ..errors import UnsupportedError
-from ..expr import Binary, Expr, Num
+from ..ir.expr import Binary, Expr, Num
 from ..ir import Block, Section
 from ..ir.modal import Sequence
 from ..syntaxes.program import HIGHEST_SEQUENCE

@@ -19,10 +19,10 @@ from ..cycle_words import CycleWords
 from ..cycles.section import WORD_ORDER
 from ..cycles.semantics import PECK, SHIFT
 from ..dialect import Dialect
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import Block, Motion
 from ..numbers import as_written
-from ..state import PLANE_AXES
+from ..ir.state import PLANE_AXES
 from .section_words import SectionWords
 from .word_numbers import _position
 

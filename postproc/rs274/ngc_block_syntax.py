@@ -14,7 +14,7 @@ modal sections, motion, arcs, modal cycle repetition) and replaces what RS274/NG
   (its order of execution; rs274 prints ``SET_FEED_RATE`` before ``USE_LENGTH_UNITS``), so the neutral
   Feed, in the block's units, is converted;
 * a spindle stop or coolant off in a block that moves is made before the motion (the RS274/NGC order
-  of execution): the section is flagged ``before_motion`` (``postproc.event_order``);
+  of execution): the section is flagged ``before_motion`` (``postproc.ir.event_order``);
 * codes in the table's ``native_g``/``native_m``/``user_m`` are kept verbatim, tagged with ``DIALECT``;
   codes in its ``refused_g``/``refused_m`` are refused with a located error; any other M code is an error;
 * a word whose value the reader left as an expression (``X[#1*2]``: an ``Expr`` in ``block.values``,
@@ -32,10 +32,10 @@ from typing import Any, ClassVar, Final
 
 from postproc.context import Context, word_columns
 from postproc.errors import ParseError, ProgramError
-from postproc.event_order import moves
-from postproc.expr import Binary, Expr, Num
+from postproc.ir.event_order import moves
+from postproc.ir.expr import Binary, Expr, Num
 from postproc.ir import Block, Dwell, NativeCode, SpindleOrientation
-from postproc.state import MM_PER_INCH
+from postproc.ir.state import MM_PER_INCH
 
 from .block_syntax import DATA_KEY, WordBlockSyntax, col_of_word, second_col
 from .codes import g_key

@@ -26,7 +26,7 @@ grblHAL takes from the last G33, and an F beside G33, which it accepts):
 * ``G33 X.. Z.. K..``: a spindle-synchronised move, K the distance per revolution along the path
   ("K word missing with g33/g33.1"; an F beside it is refused: "F word used with a g33/g33.1"). It
   changes neither the feed rate nor the feed mode. K becomes the neutral lead along the major axis
-  (``postproc.thread_lead``); a taper from a position not yet known is refused.
+  (``postproc.geometry.thread_lead``); a taper from a position not yet known is refused.
 """
 
 from __future__ import annotations
@@ -36,11 +36,11 @@ from typing import Any
 
 from postproc.context import Context
 from postproc.errors import ProgramError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, Motion
-from postproc.lathe_sections import SpindleClamp, SpindleMode, ThreadLead, XProgramming
+from postproc.ir.lathe_sections import SpindleClamp, SpindleMode, ThreadLead, XProgramming
 from postproc.rs274.codes import g_key
-from postproc.thread_lead import lead_along_major
+from postproc.geometry.thread_lead import lead_along_major
 
 MODES = {"7": "diameter", "8": "radius"}
 """G7/G8 -> how X reads."""

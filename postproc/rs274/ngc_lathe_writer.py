@@ -20,7 +20,7 @@ planner's distance per revolution along the path]:
   is off waits for the next G96). G96 needs S: the surface speed in force is written where the block has
   none.
 * A thread move is ``G33 X.. Z.. K..``, K the distance per revolution along the path
-  (``postproc.thread_lead``). G33 refuses an F beside it, so a thread block's F goes on a line of its own
+  (``postproc.geometry.thread_lead``). G33 refuses an F beside it, so a thread block's F goes on a line of its own
   before it (``feed_apart``, a lowering step); F is then the lead, as the source's F is. A thread whose
   major axis is X (a face thread) is refused: LinuxCNC's K along such a path in diameter mode is not in
   our sources [?].
@@ -28,13 +28,15 @@ planner's distance per revolution along the path]:
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any, ClassVar, Iterator
+from typing import TYPE_CHECKING, Any, ClassVar
 
 from postproc.context import Context
 from postproc.dialect import Dialect
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, Motion
-from postproc.thread_lead import lead_along_path, major_is_z
+from postproc.geometry.thread_lead import lead_along_path, major_is_z
+
+from postproc.lowering.lower import BlockStep, LoweringStep
 
 from .codes import g_key
 from .ngc_lathe import X_MODE_WORDS
@@ -44,24 +46,31 @@ _QUIET = frozenset(("TapeMark", "ProgramStart", "Comments", "Sequence"))
 """Sections of the lines that may stand before the mode line (the program's opening)."""
 
 
-def feed_apart(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class FeedApart(LoweringStep):
     """Lowering step: a thread block's F on a line of its own before it (rs274: "F word used with a
     g33/g33.1"). Only a lathe program has thread moves."""
-    if not ctx.lathe:
-        return blocks
-    return _feed_apart(blocks)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        return _FeedApart() if ctx.lathe else None
 
 
-def _feed_apart(blocks: Iterator[Block]) -> Iterator[Block]:
-    for block in blocks:
+feed_apart = FeedApart()
+
+
+class _FeedApart(BlockStep):
+    def __init__(self) -> None:
+        super().__init__()
+        self.moves = False  # a block that is only a move holds no F
+
+    def take(self, block: Block) -> list[Block] | None:
         sections = block.sections
         motion = sections.get("Motion")
         if isinstance(motion, Motion) and motion.mode == "thread" and "Feed" in sections:
             first = Block(block.line, None, "\n")
             first.sections = {"Feed": sections.pop("Feed")}
             block.changed()
-            yield first
-        yield block
+            return [first, block]
+        return None
 
 
 class LatheModes:

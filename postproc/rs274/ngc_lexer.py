@@ -29,10 +29,10 @@ from mypy_extensions import mypyc_attr
 import re
 from typing import Callable, ClassVar, Final, Iterable, Iterator
 
-from postproc.control import Assign
+from postproc.interp.control import Assign
 from postproc.dialect import Reader
 from postproc.errors import Location, ParseError, PostprocError, character_name
-from postproc.expr import Expr, Var
+from postproc.ir.expr import Expr, Var
 from postproc.ir import Block, BlockDelete, Comments, Sequence, TapeMark
 
 from .expressions import LINUXCNC_SPELLING, ExprSyntaxError, parse_word_value

@@ -3,7 +3,7 @@
 LinuxCNC (and grbl, which follows the NIST order) turn the spindle and the coolant on or off *before*
 the block's motion (the NIST RS274/NGC v3 order of execution: spindle 7, coolant 8, motion 20): ``G1 X10 M5`` stops
 the spindle and then cuts. A Fanuc-family block does what ends it after the motion, as the simulator
-does (``postproc.event_order``). Two lowering steps keep each stop where the source made it:
+does (``postproc.ir.event_order``). Two lowering steps keep each stop where the source made it:
 
 * ``stops_after_motion`` (RS274/NGC targets): a stop the source made after the motion (a Fanuc
   ``G01 X10. M05``) moves into a block of its own right after the moving block;
@@ -21,7 +21,7 @@ from typing import Final
 
 from ..context import Context
 from ..dialect import Dialect
-from ..event_order import moves
+from ..ir.event_order import moves
 from ..ir import Block, Section
 from ..lowering.lower import BlockStep, LoweringStep
 
@@ -29,7 +29,7 @@ _STOPS: Final[tuple[str, ...]] = ("SpindleControl", "Coolant")
 """What a block stops (or starts): most blocks hold neither, tested first with two dict look-ups (measured:
 a ``frozenset.isdisjoint`` of the sections cost several times more per block)."""
 _AFTER_STOPS: Final[tuple[str, ...]] = ("SpindleOrientation", "ProgramControl")
-"""What acts after a block's stops (``postproc.event_order``): an oriented stop, then a program stop or
+"""What acts after a block's stops (``postproc.ir.event_order``): an oriented stop, then a program stop or
 end. It follows the stops into their block, so ``Y2.5 M05 M19`` stops the spindle before orienting it."""
 _TOOL: Final[tuple[str, ...]] = ("ToolSelect", "ToolChange")
 """What RS274/NGC does before the spindle and the coolant (select tool 5, change tool 6): it goes along

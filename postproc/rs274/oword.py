@@ -51,12 +51,12 @@ from __future__ import annotations
 
 from typing import Callable, Container
 
-from ..control import (
+from ..interp.control import (
     Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndIf, EndRepeat, EndWhile, If, Repeat,
     Return, SubEnd, SubStart, While,
 )
 from ..errors import UnsupportedError
-from ..expr import Expr, Num, Var
+from ..ir.expr import Expr, Num, Var
 from ..ir import ProgramStart, Section
 from .expressions import (
     LINUXCNC_SPELLING, ExprSyntaxError, parse_condition, parse_word_value, skip_blanks, spell_condition,

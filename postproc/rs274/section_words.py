@@ -15,11 +15,11 @@ from mypy_extensions import mypyc_attr
 from ..context import Context
 from ..dialect import Dialect
 from ..errors import UnsupportedError
-from ..expr import Binary, Expr, Num
+from ..ir.expr import Binary, Expr, Num
 from ..ir import Block, Motion, Section
 from ..ir.verbatim import STORED_WORK_OFFSET
 from ..lowering.machine_functions import RIGID_TAP, foreign_hint, refused_rigid_tap
-from ..state import MM_PER_INCH
+from ..ir.state import MM_PER_INCH
 from .codes import CodeTable
 from .word_numbers import NumberWriter
 

@@ -18,7 +18,7 @@ from mypy_extensions import mypyc_attr
 from typing import Callable, Iterator
 
 from ..context import Context
-from ..control import CONTROL, Call
+from ..interp.control import CONTROL, Call
 from ..dialect import Dialect
 from ..errors import UnsupportedError
 from ..ir import Block

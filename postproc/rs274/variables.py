@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Callable, Final, Hashable
 
-from ..expr import Arithmetic, EvalError, Vacancy, Value, VarKey
+from ..ir.expr import Arithmetic, EvalError, Vacancy, Value, VarKey
 from ..interp.variables import MACHINE_ONLY, ProgramAlarm, SystemRanges, system_variable
 
 if TYPE_CHECKING:  # an annotation only: the frames are loaded where a run evaluates them
@@ -97,7 +97,7 @@ NGC_MACHINE_READS = frozenset((*NGC_FRAME_PARAMETERS, *NGC_POSITION))
 
 
 class MacroBVariables:
-    """Custom Macro B variables (Fanuc, Haas; vacancy: ``Vacancy.FANUC``)."""
+    """Custom Macro B variables (Fanuc, Haas; vacancy: ``Vacancy.NULL``)."""
 
     __slots__ = ("levels", "commons", "_increment")
     LOCALS = 33
@@ -109,7 +109,7 @@ class MacroBVariables:
 
     @property
     def vacancy(self) -> Vacancy:
-        return Vacancy.FANUC
+        return Vacancy.NULL
 
     @property
     def arithmetic(self) -> Arithmetic:
@@ -210,7 +210,7 @@ class NgcVariables:
 
     @property
     def vacancy(self) -> Vacancy:
-        return Vacancy.LINUXCNC
+        return Vacancy.ZERO
 
     @property
     def arithmetic(self) -> Arithmetic:

@@ -16,10 +16,10 @@ from mypy_extensions import mypyc_attr
 from ..context import Context
 from ..dialect import Dialect, Writer
 from ..errors import ProgramError, UnsupportedError
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import Block
 from ..numbers import DecimalTexts, EXACT, EXACT_INCH, format_decimal, shortcut_places
-from ..state import ModalState
+from ..ir.state import ModalState
 from .expressions import ExprSpelling, spell_word_value
 
 _ROUNDED_UNITS: Final = {"S": "rpm", "A": "deg", "B": "deg", "C": "deg", "F": ""}

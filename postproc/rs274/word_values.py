@@ -8,7 +8,7 @@ from typing import Any, Final
 
 from postproc.context import Context
 from postproc.errors import ParseError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block
 
 

@@ -20,14 +20,14 @@ from mypy_extensions import mypyc_attr
 
 from ..block_rules import per_rev_problem
 from ..context import Context
-from ..control import ASSIGN, CONTROL
+from ..interp.control import ASSIGN, CONTROL
 from ..dialect import Dialect
 from ..errors import ProgramError, UnsupportedError
-from ..event_order import after_motion
-from ..expr import Expr
+from ..ir.event_order import after_motion
+from ..ir.expr import Expr
 from ..ir import Block, CompoundMotion, Dwell, Feed, Motion, Section, one_line
 from ..numbers import MAX_PLACES, canonical_number
-from ..state import changes_nothing
+from ..ir.state import changes_nothing
 from .motion_words import MotionWords
 from .word_numbers import _position
 
@@ -310,7 +310,7 @@ class WordWriter(MotionWords):
 
     def around_dwell(self, block: Block, with_dwell: tuple[str, ...]) -> str:
         """A block whose dwell must stand on a line of its own (with ``with_dwell``), written as up to
-        three lines in the block's order of events (``postproc.event_order``): what acts before the dwell
+        three lines in the block's order of events (``postproc.ir.event_order``): what acts before the dwell
         (settings, tool, spindle start, coolant on), the dwell, then the motion and what ends the block.
         A block skip goes on every line."""
         sections = block.sections
@@ -376,7 +376,7 @@ class WordWriter(MotionWords):
         self.unsupported(_statement_name(section), block)
 
     def compound(self, block: Block, compound: CompoundMotion) -> str:
-        """Write an expansion: the block's words that act before its motion (``postproc.event_order``:
+        """Write an expansion: the block's words that act before its motion (``postproc.ir.event_order``:
         modal settings, tool change, spindle start, coolant on), a comment naming the source, each item,
         then the words that act after it (spindle stop, coolant off, program stop or end). ``expanding``
         is True meanwhile."""

@@ -1,17 +1,17 @@
-"""verify's arcs as ``postproc.arc_paths`` paths: a pair of normalised arc moves (``Move``, each run of arcs on
+"""verify's arcs as ``postproc.geometry.arc_paths`` paths: a pair of normalised arc moves (``Move``, each run of arcs on
 one circle merged) compared by the largest distance between the paths their controllers cut. Interpreted (the
 comparison, compiled, calls it only for a pair of arcs whose centres differ)."""
 
 from __future__ import annotations
 
-from ..arc_paths import arc_path, deviation
-from ..geometry import PLANE_INDEX
+from ..geometry.arc_paths import arc_path, deviation
+from ..geometry.arcs import PLANE_INDEX
 from .normal_move import Move
 
 
 def arc_deviation(a: Move, b: Move, floor: float) -> float:
     """The largest distance between the arc paths ``a`` and ``b`` (same plane and direction: the comparison has
-    checked), or some value of at most ``floor`` where it is at most that (``postproc.arc_paths.deviation``)."""
+    checked), or some value of at most ``floor`` where it is at most that (``postproc.geometry.arc_paths.deviation``)."""
     plane = a.plane or "XY"
     i, j, _ = PLANE_INDEX[plane]
     inside = ("xyz"[i], "xyz"[j])

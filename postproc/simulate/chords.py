@@ -2,7 +2,7 @@
 cut it into (``translate --arcs lines:TOL``), checked on its own terms rather than with the translator's
 arithmetic: every chord end lies on the arc (the radius interpolated along it, as the simulator draws
 an arc whose end radius differs), every chord's middle and its point nearest the centre lie within TOL of it
-(along the rays from the centre: ``postproc.arc_paths``'s matching of two arcs), the axes outside the
+(along the rays from the centre: ``postproc.geometry.arc_paths``'s matching of two arcs), the axes outside the
 plane move in proportion to the angle (a helix), each chord turns the arc's way by at most half a turn,
 and together they end where the arc ends, at its feed.
 
@@ -20,7 +20,7 @@ import math
 from itertools import zip_longest
 from typing import Any, Callable, Iterable, Iterator, Protocol
 
-from ..geometry import PLANE_INDEX
+from ..geometry.arcs import PLANE_INDEX
 from .normal_move import Move, same_feed
 
 Item = Any
@@ -115,7 +115,7 @@ def _inside(s: dict[str, float], e: dict[str, float], c: tuple[float, float], pi
     """How far inside the arc the chord ``s``-``e`` (turning ``step`` of it, from the share ``t0`` to ``t``) comes at
     its point nearest the centre: a chord's distance from the centre is least there (its ends may lie off the
     circle unevenly, so that point is not always its middle), and the arc's radius is the one at that point's
-    angle. Along the rays from the centre, as ``postproc.arc_paths`` matches two arcs."""
+    angle. Along the rays from the centre, as ``postproc.geometry.arc_paths`` matches two arcs."""
     sx, sy = s.get(pi, 0.0), s.get(pj, 0.0)
     dx, dy = e.get(pi, 0.0) - sx, e.get(pj, 0.0) - sy
     length2 = dx * dx + dy * dy

@@ -419,7 +419,7 @@ def _differ(a: Move | Event | None, b: Move | Event | None, report: Report) -> s
     dev = norm(apart)
     if a.centre is not None and b.centre is not None and (a.centre != b.centre or abs(a.sweep - b.sweep) >= _HALF_TURN):
         # two controllers' paths for the arc (each centre where its own rule puts it): the largest distance
-        # between them (``postproc.arc_paths``), decided by a bound where it cannot exceed the largest so far;
+        # between them (``postproc.geometry.arc_paths``), decided by a bound where it cannot exceed the largest so far;
         # about one centre, turning within half a turn of each other, the paths lie apart at most as far as
         # their ends (radii and angles change evenly; the start's distance is the pair before's end's)
         dev = max(dev, arc_deviation(a, b, report.max_deviation if report.where is not None else -1.0))

@@ -14,10 +14,10 @@ from ..compensation.geometry_for import cutter_for
 from ..compensation.rules import CutterRules
 from ..context import Context
 from ..errors import PostprocError, ProgramError, UnsupportedError
-from ..geometry import CENTRE_KEYS
+from ..geometry.arcs import CENTRE_KEYS
 from ..ir import Block
 from ..lowering.inverse_time import move_length
-from ..state import PLANE_AXES
+from ..ir.state import PLANE_AXES
 from .events import CUTTER_RADIUS, LATHE_TOOL_OFFSET, TOOL_LENGTH, Event, num
 from .move_record import Emitted, MoveRecord
 from .position import LENGTH_AXIS, Position

@@ -28,7 +28,7 @@ from typing import Any, Callable, Final, Iterable
 
 from mypy_extensions import i64, mypyc_attr
 
-from ..geometry import PLACES
+from ..geometry.arcs import PLACES
 from .move_record import MoveRecord
 
 _PLACES: Final = 6

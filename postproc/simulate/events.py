@@ -8,7 +8,7 @@ from typing import Any, Final
 
 from ..context import Context
 from ..errors import ProgramError
-from ..geometry import PLACES
+from ..geometry.arcs import PLACES
 from ..setup.machine_setup import MachineSetup
 
 UNEVALUATED = "a computed word reaches the simulation unevaluated"

@@ -11,9 +11,9 @@ from mypy_extensions import mypyc_attr
 
 from ..block_rules import ArcError, arc_centre
 from ..errors import ProgramError
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import Block, Motion
-from ..state import PLANE_AXES
+from ..ir.state import PLANE_AXES
 from .events import UNEVALUATED, Event, num
 from .compensated_moves import CompensatedMoves
 from .move_record import Emitted, MoveRecord

@@ -16,12 +16,12 @@ from ..compensation.tool_length import AXIS as _AXIS, ToolLength
 from ..compensation.tool_table import ToolTable
 from ..context import Context
 from ..errors import Location, ProgramError
-from ..expr import Expr
-from ..geometry import CENTRE_KEYS
+from ..ir.expr import Expr
+from ..geometry.arcs import CENTRE_KEYS
 from ..ir import Block, DataSetting
 from ..ir.verbatim import STORED_WORK_OFFSET
 from ..lowering.program_end import EndTracker
-from ..state import ModalState
+from ..ir.state import ModalState
 from .events import LATHE_TOOL_OFFSET, LINEAR_AXES as _LINEAR, TOUCH_OFF, UNEVALUATED, Event, num, start_position
 from .move_record import Emitted
 from .travel import TravelCheck, TravelError

@@ -15,7 +15,7 @@ from typing import Any, Final, Iterable, Iterator
 
 from mypy_extensions import mypyc_attr
 
-from ..geometry import CENTRE_KEYS, PLANE_INDEX, arc_sweep
+from ..geometry.arcs import CENTRE_KEYS, PLANE_INDEX, arc_sweep
 from .events import Event
 from .move_record import MoveRecord
 from .normal_move import Move, same_feed as _same_feed
@@ -250,7 +250,7 @@ def merge_arc(run: Move, m: Move, eps: float) -> bool:
     circle: their centres and start radii within ``eps``, or else the path of the one that sweeps less within
     ``eps`` of the other's circle (``_off_circle``; a run that sweeps less takes ``m``'s centre); and the axes
     outside the plane moving at one rate per angle (``_one_helix``). Why the path too: a controller that moves a
-    tiny arc's centre onto its chord's bisector (ISG, Fagor: ``postproc.arc_end``) cuts the other's circle within
+    tiny arc's centre onto its chord's bisector (ISG, Fagor: ``postproc.geometry.arc_end``) cuts the other's circle within
     a micron with a centre a micron or more away, so by centres alone one side of a comparison merged a helix the
     other split and verify said the structure differs (issue 26: a CamBam helical bore, the 0.012 mm arc where
     each turn meets the next, towards ISG and Fagor; ``tests/test_verify_arc_runs.py``)."""

@@ -17,10 +17,10 @@ from ..compensation.tool_length import AXIS as _AXIS
 from ..context import Context
 from ..cycles.lathe_lowering import lathe_tool
 from ..errors import PostprocError, ProgramError, UnsupportedError
-from ..event_order import after_motion
-from ..expr import Expr
+from ..ir.event_order import after_motion
+from ..ir.expr import Expr
 from ..ir import Block, MachineFunction, Motion, Section
-from ..state import MM_PER_INCH, MODAL_KEYS as _MODAL
+from ..ir.state import MM_PER_INCH, MODAL_KEYS as _MODAL
 from .events import (CUTTER_RADIUS, LATHE_TOOL_OFFSET, TOOL_SELECTION, UNEVALUATED, UNSIMULATED, Event, num,
                      _setting_text)
 from .move_record import Emitted, MoveRecord
@@ -477,7 +477,7 @@ class Simulator(Moves):
             self.sync = None
 
     def rigid_tap(self, block: Block, tap: Any, absolute: bool, emit: Callable[[Emitted], None]) -> None:
-        """A spindle-synchronised tap (``postproc.synchronised_tap``): a ``tap`` move to the end point and
+        """A spindle-synchronised tap (``postproc.lowering.synchronised_tap``): a ``tap`` move to the end point and
         one back to the start, ``f`` the pitch in mm/rev; a dwell between them if the tap has one."""
         if self.cutter is not None and self.cutter.side is not None:
             raise ProgramError("a rigid tap with cutter compensation on cannot be run (cancel it first)",

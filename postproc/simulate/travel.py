@@ -37,7 +37,7 @@ from .work_offsets import offset_beyond_frame
 
 if TYPE_CHECKING:
     from ..context import Context
-    from ..state import ModalState
+    from ..ir.state import ModalState
 
 
 class Simulated(Protocol):

@@ -5,7 +5,7 @@ first: zero-length moves are dropped (the simulator already does), consecutive s
 same kind and feed that continue one line are merged (points within half the tolerance of the line
 count as on it), and so are consecutive arcs on one circle. Then moves are compared pairwise: end
 points give the deviation, for arcs the largest distance between the paths each side's controller cuts
-(``postproc.arc_paths``, docs/verify.md "Arcs"), never their centres'; a different kind of move, feed, plane, or a
+(``postproc.geometry.arc_paths``, docs/verify.md "Arcs"), never their centres'; a different kind of move, feed, plane, or a
 different machine event (dwell, spindle, orientation, tool, coolant, stop, end) is a structural
 mismatch, reported at its first place; after it the two paths no longer line up and comparing stops.
 """

@@ -17,17 +17,17 @@ from math import hypot
 from typing import Final, NoReturn, cast
 
 from postproc.block_rules import ZERO_FEED, ArcError, arc_centre, check_values, needs_feed, per_rev_problem
-from postproc.control import ASSIGN, CONTROL
-from postproc.arc_end import SPIRAL, TARGET_ARC_END, ArcEndRule
+from postproc.interp.control import ASSIGN, CONTROL
+from postproc.geometry.arc_end import SPIRAL, TARGET_ARC_END, ArcEndRule
 from postproc.errors import ProgramError, UnsupportedError
-from postproc.event_order import MOVING, after_motion
-from postproc.geometry import ARC_TOLERANCE_MM, PLACES
-from postproc.expr import Expr
+from postproc.ir.event_order import MOVING, after_motion
+from postproc.geometry.arcs import ARC_TOLERANCE_MM, PLACES
+from postproc.ir.expr import Expr
 from postproc.ir import Block, Motion
 from postproc.ir.keys import only_move
-from postproc.state import LEFT_START, MM_PER_INCH, MODAL_KEYS, PLANE_AXES
+from postproc.ir.state import LEFT_START, MM_PER_INCH, MODAL_KEYS, PLANE_AXES
 from postproc.context import Context
-from postproc.syntax import Syntax
+from postproc.syntaxes.syntax import Syntax
 from postproc.syntaxes.power_on_units import KEY as _POWER_ON_UNITS, take_power_on_units
 
 _CONTROL: Final = CONTROL
@@ -284,7 +284,7 @@ def _target_accepts(block: Block, ctx: Context, motion: Motion, target: tuple[st
     """Refuse an arc (start, end, programmed centre in mm; ``scale`` mm per program unit) the source's
     controller runs as a spiral where the translation's target would refuse it, or would run it as a circle
     about a centre it moves that leaves that spiral by more than ``SPIRAL_AS_CIRCLE_MM``
-    (``postproc.arc_end.TARGET_ARC_END``)."""
+    (``postproc.geometry.arc_end.TARGET_ARC_END``)."""
     name, rule = target
     inch = scale != 1.0
     unit = "in" if inch else "mm"

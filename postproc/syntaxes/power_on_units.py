@@ -17,7 +17,7 @@ from __future__ import annotations
 from typing import Final
 
 from postproc.context import Context
-from postproc.control import ASSIGN, CONTROL, SubStart
+from postproc.interp.control import ASSIGN, CONTROL, SubStart
 from postproc.errors import UnsupportedError
 from postproc.ir import Block, Units
 

@@ -20,13 +20,13 @@ from typing import TYPE_CHECKING, Callable, ClassVar, Iterable, Iterator
 
 from mypy_extensions import mypyc_attr
 
-from ..control import ASSIGN, CONTROL, Call, ModalCall
+from ..interp.control import ASSIGN, CONTROL, Call, ModalCall
 from ..errors import ConfigError, Diagnostics, ErrorLevel, PostprocError
-from ..expr import Expr, Var
+from ..ir.expr import Expr, Var
 from ..ir import AXES, Block, Sequence
 from ..ir.keys import only_move
 from ..context import Context
-from ..syntax import Syntax
+from .syntax import Syntax
 from .kept_lines import Kept, KeptLines
 from ..interp.spelling import spell_integer, spell_number
 from ..interp.rules import STORED_PROGRAMS, SubprogramRules
@@ -126,7 +126,7 @@ class ProgramSyntax(Syntax):
     # -- reading ---------------------------------------------------------------------------------
     def read_lines(self, lines: Iterable[str], file: str, ctx: Context, diagnostics: Diagnostics) -> list[Block]:
         """Blocks of ``lines`` through the dialect's own reader (reporting into ``diagnostics``)."""
-        from ..lines import checked_lines
+        from .lines import checked_lines
         reader = ctx.reader
         if reader is None:
             return []

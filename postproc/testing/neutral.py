@@ -15,7 +15,7 @@ from typing import Any, Callable, Iterable, Iterator
 from ..context import Context
 from ..cycles.resolve import EXPANSIONS
 from ..cycles.section import CannedCycle
-from ..cycles.semantics import SEMANTICS
+from ..cycles.semantics import semantics_named, semantics_names
 from ..dialect import Dialect
 from ..errors import Diagnostics, ErrorLevel, ErrorList, PostprocError
 from ..ir import (
@@ -122,7 +122,7 @@ def cycle_rules(dialect: type[Dialect]) -> str:
     """The hole-cycle rules a generated cycle is resolved under: the dialect's own, or, for a dialect without
     rules of its own (it writes no cycle natively), those of the first family modelled, as if the program had
     been read from that controller: its writer must keep or refuse the cycle all the same."""
-    return dialect.CYCLE_SEMANTICS if dialect.CYCLE_SEMANTICS in SEMANTICS else next(iter(SEMANTICS))
+    return dialect.CYCLE_SEMANTICS if semantics_named(dialect.CYCLE_SEMANTICS) is not None else semantics_names()[0]
 
 
 def drill_cycle(kind: str, at: dict[str, float], hole: tuple[float, float], *, bottom: float, r: float,

@@ -15,11 +15,11 @@ from dataclasses import dataclass
 from typing import Any, Callable
 
 from ..api import read_program
-from ..control import Assign
+from ..interp.control import Assign
 from ..cycles.section import CannedCycle
 from ..dialect import Dialect
 from ..errors import ErrorList
-from ..expr import Binary, Num, Var
+from ..ir.expr import Binary, Num, Var
 from ..ir import (
     CutterCompensation, Dwell, Feed, Motion, Section, SpindleControl, SpindleOrientation, SpindleSpeed, ToolChange,
     ToolLengthOffset, ToolSelect,

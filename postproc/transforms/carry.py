@@ -46,15 +46,15 @@ from ..context import Context
 from ..cycles.section import CannedCycle
 from ..cycles.semantics import PECK
 from ..errors import PostprocError, ProgramError
-from ..expr import Expr
-from ..geometry import centre_from_radius
+from ..ir.expr import Expr
+from ..geometry.arcs import centre_from_radius
 from ..frames.affine import EXACT, INDEX, XYZ, Affine
 from ..frames.frame import PLANE_AXES
 from ..frames.section import FrameChange
 from ..ir import Block, CompoundMotion, CutterCompensation, DataSetting, Motion, Section
-from ..lathe_sections import CoordinateSet, LatheCycle
-from ..state import MM_PER_INCH, ModalState
-from ..synchronised_tap import RigidTap
+from ..ir.lathe_sections import CoordinateSet, LatheCycle
+from ..ir.state import MM_PER_INCH, ModalState
+from ..lowering.synchronised_tap import RigidTap
 from .spec import ProgramTransform
 from .words import COMPUTED, COMPUTES, INERT, SYMBOLIC, cycle_roles, named
 

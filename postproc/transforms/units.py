@@ -25,14 +25,14 @@ from typing import Final, Iterator
 from ..context import Context
 from ..cycles.section import CannedCycle
 from ..errors import PostprocError, ProgramError
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..frames.frame import PLANE_AXES
 from ..frames.section import FrameChange
-from ..lathe_sections import CoordinateSet, InProfile, LatheCycle, SpindleMode, ThreadLead, XProgramming
+from ..ir.lathe_sections import CoordinateSet, InProfile, LatheCycle, SpindleMode, ThreadLead, XProgramming
 from ..ir import (Block, CompoundMotion, DataSetting, Feed, Motion, NativeCode, PathControl, Section, SpindleSpeed,
                   ToolLengthOffset, Units)
-from ..state import MM_PER_INCH
-from ..synchronised_tap import RigidTap
+from ..ir.state import MM_PER_INCH
+from ..lowering.synchronised_tap import RigidTap
 from .carry import native
 from .words import COMPUTED, COMPUTES, INERT, SYMBOLIC, cycle_roles, named, respell
 

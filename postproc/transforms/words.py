@@ -10,7 +10,7 @@ from typing import Final
 from ..cycle_words import CycleWords
 from ..cycles.semantics import PECK, SHIFT
 from ..cycles.section import CannedCycle
-from ..control import ASSIGN, CONTROL, LABEL
+from ..interp.control import ASSIGN, CONTROL, LABEL
 from ..errors import ProgramError
 from ..frames.frame import PLANE_AXES
 

@@ -1,19 +1,19 @@
-"""Round-trip samples of the control-flow sections (``postproc.control``), for ``tests/test_ir_xml.py``.
+"""Round-trip samples of the control-flow sections (``postproc.interp.control``), for ``tests/test_ir_xml.py``.
 
 Each sample is a builder and the canonical XML written by hand (the expressions inside follow
-``postproc.expr``'s element names).
+``postproc.ir.expr``'s element names).
 """
 
 from __future__ import annotations
 
 from typing import Any, Callable
 
-from postproc.control import (
+from postproc.interp.control import (
     Assign, Break, Call, Case, Continue, Default, Do, DoWhile, Else, ElseIf, EndFor, EndIf, EndRepeat,
     EndSwitch, EndWhile, For, Goto, GotoLabel, If, IfThen, Label, ModalCall, ModalCallCancel, Repeat, Return,
     SubEnd, SubStart, Switch, Until, While,
 )
-from postproc.expr import Binary, Num, Var
+from postproc.ir.expr import Binary, Num, Var
 
 Builder = Callable[[dict[str, type]], Any]
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 from typing import Any, Iterable, Iterator
 
-from postproc.geometry import CENTRE_KEYS, PLANE_INDEX, arc_sweep
+from postproc.geometry.arcs import CENTRE_KEYS, PLANE_INDEX, arc_sweep
 from postproc.simulate.events import Event
 from postproc.simulate.normal_move import Move, same_feed as _same_feed
 from postproc.simulate.runs import merge_arc

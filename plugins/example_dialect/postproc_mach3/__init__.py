@@ -17,7 +17,7 @@ from __future__ import annotations
 
 from typing import Callable
 
-from postproc.comments import CommentSyntax
+from postproc.syntaxes.comments import CommentSyntax
 from postproc.rs274.cutter_rules import NIST_V3
 from postproc.dialect import Dialect, Lazy, Reader, Writer
 from postproc.hookspecs import hookimpl
@@ -26,7 +26,7 @@ from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.rs274.order_of_execution import stops_after_motion
 from postproc.rs274.return_level import return_level_in_force
 from postproc.setup.machine_setup import MachineSetup
-from postproc.syntax import Pipeline
+from postproc.syntaxes.syntax import Pipeline
 from postproc.xmlio import XFactory
 
 from .codes import CODES

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from typing import Any, ClassVar
 
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, Motion
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.writer import WordWriter

@@ -31,17 +31,17 @@ fail unless the set-up's ``<Cycles orientation="stop"|"m19">`` says how to stand
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Callable, ClassVar, Iterator
+from typing import TYPE_CHECKING, Callable, ClassVar
 
-from postproc.comments import CommentSyntax
+from postproc.syntaxes.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.grbl_family.dialect import GrblFamily
 from postproc.hookspecs import hookimpl
-from postproc.lowering.lower import BlockStep, LoweringStep
+from postproc.lowering.lazy_step import LazyStep
 from postproc.output.line_format import LineRule
 from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.setup.machine_setup import MachineSetup
-from postproc.syntax import Pipeline
+from postproc.syntaxes.syntax import Pipeline
 from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
 
@@ -49,43 +49,14 @@ from .codes import CODES
 
 if TYPE_CHECKING:
     from postproc.context import Context
-    from postproc.ir import Block
 
 
-class _WriteToolLengths(LoweringStep):
-    """``postproc.grbl_family.lengths.write_tool_lengths``, imported when a translation first lowers for grbl."""
-
-    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        from postproc.grbl_family.lengths import write_tool_lengths as step
-        return step.start(ctx, target)
+write_tool_lengths = LazyStep("postproc.grbl_family.lengths:write_tool_lengths")
+drop_resolved_tool_data = LazyStep("postproc.grbl_family.lengths:drop_resolved_tool_data")
+lower_for_lean_controller = LazyStep("postproc.rs274.lean_controller:lower_for_lean_controller")
 
 
-class _DropResolvedToolData(LoweringStep):
-    """``postproc.grbl_family.lengths.drop_resolved_tool_data``, imported when a translation first lowers for grbl."""
-
-    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        from postproc.grbl_family.lengths import drop_resolved_tool_data as step
-        return step.start(ctx, target)
-
-
-class _LowerForLeanController(LoweringStep):
-    """``postproc.rs274.lean_controller.lower_for_lean_controller``, imported when a translation first lowers
-    for grbl."""
-
-    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        from postproc.rs274.lean_controller import lower_for_lean_controller as step
-        return step.start(ctx, target)
-
-
-write_tool_lengths = _WriteToolLengths()
-drop_resolved_tool_data = _DropResolvedToolData()
-lower_for_lean_controller = _LowerForLeanController()
-
-
-def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """``postproc.lowering.cutter_compensation.resolve_cutter_compensation``, imported when first used."""
-    from postproc.lowering.cutter_compensation import resolve_cutter_compensation as step
-    return step(blocks, ctx, target)
+resolve_cutter_compensation = LazyStep("postproc.lowering.cutter_compensation:resolve_cutter_compensation")
 
 
 class Grbl(GrblFamily):

@@ -14,6 +14,7 @@ from postproc.context import Context
 from postproc.grbl_family.block_syntax import GrblFamilyBlockSyntax
 from postproc.ir import Block, ToolChange
 from postproc.rs274.codes import CodeTable
+from postproc.frames.section import SHARED_OFFSET
 
 from .codes import CODES, M_GROUPS, NO_M19
 
@@ -30,7 +31,7 @@ class GrblBlockSyntax(GrblFamilyBlockSyntax):
     """G10 L2 P0-P6 sets a work system's offset (P0 the active one); other G10 forms are kept verbatim."""
     DATA_INCREMENTAL: ClassVar[bool] = False
     DATA_P0_ACTIVE: ClassVar[bool] = True
-    FRAME_RULES: ClassVar[str] = "rs274"
+    FRAME_RULES: ClassVar[str] = SHARED_OFFSET
     """G92/G92.1 (``codes``) mean LinuxCNC's."""
     REAL_LETTERS = frozenset("XYZIJKRPF")
     INTEGER_LETTERS = frozenset("NTL")

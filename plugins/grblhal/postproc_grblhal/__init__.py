@@ -40,81 +40,38 @@ read where a program is read and written.
 
 from __future__ import annotations
 
-from typing import Callable, ClassVar, Iterator, Mapping, TYPE_CHECKING
+from typing import Callable, ClassVar, Mapping, TYPE_CHECKING
 
-from postproc.comments import CommentSyntax
+from postproc.syntaxes.comments import CommentSyntax
 from postproc.dialect import Dialect, Lazy, Reader, ResolvedCycle
+from postproc.rs274.cycle_semantics import RS274 as RS274_CYCLES
 from postproc.grbl_family.dialect import GrblFamily
 from postproc.hookspecs import hookimpl
-from postproc.lowering.lower import BlockStep, LoweringStep
+from postproc.lowering.lazy_step import LazyStep
 from postproc.lowering.program_end import comment_numbered_subs_after_end
 from postproc.output.line_format import LineRule
 from postproc.output.writer_base import Writer
 from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.rs274.order_of_execution import stops_after_motion
 from postproc.setup.machine_setup import MachineSetup
-from postproc.syntax import Pipeline
+from postproc.syntaxes.syntax import Pipeline
 from postproc.xmlio import XFactory
 
 from .codes import CODES
 
 if TYPE_CHECKING:
     from postproc.context import Context
-    from postproc.ir import Block
 
 
-class _WriteToolLengths(LoweringStep):
-    """``postproc.grbl_family.lengths.write_tool_lengths``, imported when a translation first lowers for grblHAL."""
-
-    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        from postproc.grbl_family.lengths import write_tool_lengths as step
-        return step.start(ctx, target)
+write_tool_lengths = LazyStep("postproc.grbl_family.lengths:write_tool_lengths")
+drop_resolved_tool_data = LazyStep("postproc.grbl_family.lengths:drop_resolved_tool_data")
+close_full_circles = LazyStep("postproc.rs274.lean_controller:close_full_circles")
 
 
-class _DropResolvedToolData(LoweringStep):
-    """``postproc.grbl_family.lengths.drop_resolved_tool_data``, imported when a translation first lowers for grblHAL."""
-
-    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        from postproc.grbl_family.lengths import drop_resolved_tool_data as step
-        return step.start(ctx, target)
-
-
-class _CloseFullCircles(LoweringStep):
-    """``postproc.rs274.lean_controller.close_full_circles``, imported when a translation first lowers for
-    grblHAL."""
-
-    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        from postproc.rs274.lean_controller import close_full_circles as step
-        return step.start(ctx, target)
-
-
-write_tool_lengths = _WriteToolLengths()
-drop_resolved_tool_data = _DropResolvedToolData()
-close_full_circles = _CloseFullCircles()
-
-
-def cancel_cycles_alone(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """``cancels.cancel_cycles_alone``, imported when a translation first lowers for grblHAL."""
-    from .cancels import cancel_cycles_alone as step
-    return step(blocks, ctx, target)
-
-
-def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """``postproc.lowering.cutter_compensation.resolve_cutter_compensation``, imported when first used."""
-    from postproc.lowering.cutter_compensation import resolve_cutter_compensation as step
-    return step(blocks, ctx, target)
-
-
-def thread_feed_apart(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """``postproc.rs274.ngc_lathe_writer.feed_apart``, imported when a translation first lowers for grblHAL."""
-    from postproc.rs274.ngc_lathe_writer import feed_apart
-    return feed_apart(blocks, ctx, target)
-
-
-def subprograms_as_subs(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """``subprograms.subprograms_as_subs``, imported when a translation first lowers for grblHAL."""
-    from .subprograms import subprograms_as_subs as step
-    return step(blocks, ctx, target)
+cancel_cycles_alone = LazyStep(f"{__name__}.cancels:cancel_cycles_alone")
+resolve_cutter_compensation = LazyStep("postproc.lowering.cutter_compensation:resolve_cutter_compensation")
+thread_feed_apart = LazyStep("postproc.rs274.ngc_lathe_writer:feed_apart")
+subprograms_as_subs = LazyStep(f"{__name__}.subprograms:subprograms_as_subs")
 
 
 class Grblhal(GrblFamily):
@@ -137,7 +94,7 @@ class Grblhal(GrblFamily):
     PECK_CLEARANCE_MM = 0.1
     """G73's retract after each peck: the setting ``$73``, 0.1 mm by default [V: ``config.h``
     ``DEFAULT_G73_RETRACT``; a build whose ``$73`` differs is not modelled]. G83 has no clearance (``pecking``)."""
-    CYCLE_SEMANTICS = "rs274"
+    CYCLE_SEMANTICS = RS274_CYCLES.name
     """grblHAL's G81/G82 are read under RS274/NGC rules (``cycles``: a block where grblHAL's G98 differs is
     refused when read, expanded when written)."""
     INVERSE_TIME_FEED = True

@@ -20,6 +20,7 @@ from postproc.rs274 import ngc_lathe
 from postproc.rs274.block_syntax import col_of_word
 from postproc.rs274.codes import CodeTable, g_key
 from postproc.rs274.ngc_block_syntax import REAL_LETTERS
+from postproc.frames.section import SHARED_OFFSET
 
 from .codes import CODES, G76_ON_A_MILL, M_GROUPS, NO_M19
 from .lathe import GRBLHAL_SAID, NO_SYNC as NO_THREAD_SYNC, NOT_LATHE
@@ -43,7 +44,7 @@ class GrblhalBlockSyntax(GrblFamilyBlockSyntax):
     """G10 L2 P0-P9 sets a work system's offset (P0 the active one); other G10 forms are kept verbatim."""
     DATA_INCREMENTAL: ClassVar[bool] = False
     DATA_P0_ACTIVE: ClassVar[bool] = True
-    FRAME_RULES: ClassVar[str] = "rs274"
+    FRAME_RULES: ClassVar[str] = SHARED_OFFSET
     """G92/G92.1/G92.2 (``codes``) mean LinuxCNC's."""
     M_GROUPS = M_GROUPS
     NO_M19 = NO_M19

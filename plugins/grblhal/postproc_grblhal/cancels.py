@@ -9,11 +9,12 @@ anything but modal settings stands in a block of its own before it (``GrblhalWri
 
 from __future__ import annotations
 
-from typing import Final, Iterator
+from typing import Final
 
 from postproc.context import Context
 from postproc.dialect import Dialect
 from postproc.ir import Block, Motion
+from postproc.lowering.lower import BlockStep, LoweringStep
 
 GROUP_01: Final = frozenset(("rapid", "linear", "cw", "ccw"))
 """Motion modes that end a cycle themselves (no cancel is written beside them)."""
@@ -25,28 +26,32 @@ BESIDE_A_BARE_MOTION_CODE: Final = frozenset((
 """What may share a block with a bare motion code: nothing with axis words of its own."""
 
 
-def cancel_cycles_alone(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class CancelCyclesAlone(LoweringStep):
     """Lowering step (module docstring); a grblHAL program is written as it reads."""
-    if ctx.dialect == target.NAME:
-        return blocks
-    return _alone(blocks)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        return None if ctx.dialect == target.NAME else _Alone()
 
 
-def _alone(blocks: Iterator[Block]) -> Iterator[Block]:
-    for block in blocks:
+cancel_cycles_alone = CancelCyclesAlone()
+
+
+class _Alone(BlockStep):
+    def __init__(self) -> None:
+        super().__init__()
+        self.moves = False  # a block that is only a move holds no cancel
+
+    def take(self, block: Block) -> list[Block] | None:
         sections = block.sections
         if "CycleCancel" not in sections or BESIDE_A_BARE_MOTION_CODE.issuperset(sections):
-            yield block
-            continue
+            return None
         motion = sections.get("Motion")
         if isinstance(motion, Motion) and motion.mode in GROUP_01:
-            yield block
-            continue
+            return None
         first = Block(block.line, None, "\n")
         first.sections = {key: sections.pop(key) for key in ("Sequence", "BlockDelete") if key in sections}
         if "BlockDelete" in sections:  # both halves are skipped with the block
             first.sections["BlockDelete"] = sections["BlockDelete"]
         first.sections["CycleCancel"] = sections.pop("CycleCancel")
         block.changed()
-        yield first
-        yield block
+        return [first, block]

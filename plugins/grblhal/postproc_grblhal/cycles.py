@@ -35,7 +35,7 @@ from postproc.context import Context
 from postproc.cycles.section import CannedCycle
 from postproc.errors import ParseError
 from postproc.ir import Block
-from postproc.syntax import Syntax
+from postproc.syntaxes.syntax import Syntax
 
 NATIVE: Final = frozenset({"drill", "drill_dwell"})
 """The cycles grblHAL runs as another family does (G81, G82): kept native from another dialect."""

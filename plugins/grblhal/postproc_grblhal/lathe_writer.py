@@ -10,9 +10,9 @@ from __future__ import annotations
 
 from typing import Any, ClassVar
 
-from postproc.event_order import after_motion
+from postproc.ir.event_order import after_motion
 from postproc.ir import Block, Motion, SpindleControl
-from postproc.lathe_sections import SpindleMode
+from postproc.ir.lathe_sections import SpindleMode
 from postproc.rs274.ngc_lathe_writer import NgcLatheWriting
 
 from .lathe import NO_SYNC_WRITTEN

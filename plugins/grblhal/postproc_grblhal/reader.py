@@ -19,7 +19,7 @@ from __future__ import annotations
 
 from typing import Iterable, Iterator
 
-from postproc.control import CONTROL, Call, Return, SubEnd, SubStart
+from postproc.interp.control import CONTROL, Call, Return, SubEnd, SubStart
 from postproc.errors import Location, ParseError
 from postproc.grbl_family.reader import GrblFamilyReader
 from postproc.ir import Block

@@ -22,11 +22,12 @@ from __future__ import annotations
 from typing import Iterator
 
 from postproc.context import Context
-from postproc.control import ASSIGN, CONTROL, Call, EndRepeat, Repeat, Return, SubEnd, SubStart
+from postproc.interp.control import ASSIGN, CONTROL, Call, EndRepeat, Repeat, Return, SubEnd, SubStart
 from postproc.dialect import Dialect
 from postproc.errors import UnsupportedError
-from postproc.expr import Expr, Num
+from postproc.ir.expr import Expr, Num
 from postproc.ir import Block
+from postproc.lowering.lower import BlockStep, LoweringStep
 
 CONVERTED = "grblhal_subprograms"
 """``ctx.run_data`` key: this step wrote the program's subprograms as o-word subs (the writer then writes the
@@ -41,41 +42,54 @@ _CODE = frozenset(("Comments", "ProgramStart"))
 """Sections that are no code (a block of only these may stand after a subprogram's ``M99``)."""
 
 
-def subprograms_as_subs(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+class SubprogramsAsSubs(LoweringStep):
     """Lowering step for grblHAL (module docstring); a program without subprogram calls streams through, and
     on a build without expressions, or from grblHAL itself, the step is not in the stream at all."""
-    if not ctx.setup.controller.expressions or ctx.dialect == target.NAME:
-        return blocks
-    return _as_subs(blocks, ctx)
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        if not ctx.setup.controller.expressions or ctx.dialect == target.NAME:
+            return None
+        return _AsSubs(ctx)
 
 
-def _as_subs(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
-    held: list[Block] | None = None
-    computes: Block | None = None
-    for block in blocks:
-        control = block.sections.get(CONTROL)
-        if isinstance(control, Call) and control.kind == "sub":
-            held = [block]
-            break
-        if computes is None and (control is not None or ASSIGN in block.sections
-                                 or any(isinstance(value, Expr) for value in block.values.values())):
-            computes = block
-        yield block
-    if held is None:
-        return
-    if computes is not None:
-        raise UnsupportedError("a program that computes, with subprograms (an M98 subprogram shares its caller's "
-                               "locals, a grblHAL call opens its own)", ctx.at(computes))
-    ended = False
-    for block in blocks:
-        if _ends_main(block):
+subprograms_as_subs = SubprogramsAsSubs()
+
+
+class _AsSubs(BlockStep):
+    """One run: the blocks stream up to the first call; from there the main program is held to its end
+    (``held``), then its subprograms (``subs``) and what follows them (``tail``), all given back at the end."""
+
+    def __init__(self, ctx: Context) -> None:
+        super().__init__()
+        self.ctx = ctx
+        self.computes: Block | None = None
+        """The first block before the first call that computes (an error once a call is found)."""
+        self.held: list[Block] | None = None
+        self.ended = False
+        """The held main program reached its end (M2/M30): what follows is subprograms and the tail."""
+        self.subs: list[tuple[int, list[Block]]] = []
+        self.tail: list[Block] = []
+
+    def take(self, block: Block) -> list[Block] | None:
+        held = self.held
+        if held is None:
+            control = block.sections.get(CONTROL)
+            if isinstance(control, Call) and control.kind == "sub":
+                if self.computes is not None:
+                    raise UnsupportedError("a program that computes, with subprograms (an M98 subprogram shares "
+                                           "its caller's locals, a grblHAL call opens its own)",
+                                           self.ctx.at(self.computes))
+                self.held = [block]
+                return []
+            if self.computes is None and (control is not None or ASSIGN in block.sections
+                                          or any(isinstance(value, Expr) for value in block.values.values())):
+                self.computes = block
+            return None
+        if not self.ended:
             held.append(block)
-            ended = True
-            break
-        held.append(block)
-    subs: list[tuple[int, list[Block]]] = []
-    tail: list[Block] = []
-    for block in blocks:
+            self.ended = _ends_main(block)
+            return []
+        subs, tail = self.subs, self.tail
         start = block.sections.get("ProgramStart")
         number = getattr(start, "number", None)
         if "TapeMark" in block.sections:
@@ -86,19 +100,28 @@ def _as_subs(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
             subs[-1][1].append(block)
         else:
             tail.append(block)
-    if not ended:
-        raise UnsupportedError("a subprogram call in a program without an end (M2/M30), after which its "
-                               "subprograms stand", ctx.at(held[0]))
-    numbers = {number for number, _ in subs}
-    labels = (label for label in range(1, LAST_LABEL + 1) if label not in numbers)
-    ordered = list(_callees_first(subs, ctx))
-    _check_nesting(ordered, held, ctx)
-    ctx.run_data[CONVERTED] = True
-    for number, body in ordered:
-        yield from _sub(number, body, ctx, numbers, labels)
-    for block in held:
-        yield from _main_block(block, ctx, numbers, labels)
-    yield from tail
+        return []
+
+    def finish(self) -> list[Block]:
+        held, ctx = self.held, self.ctx
+        if held is None:
+            return []
+        if not self.ended:
+            raise UnsupportedError("a subprogram call in a program without an end (M2/M30), after which its "
+                                   "subprograms stand", ctx.at(held[0]))
+        subs = self.subs
+        numbers = {number for number, _ in subs}
+        labels = (label for label in range(1, LAST_LABEL + 1) if label not in numbers)
+        ordered = list(_callees_first(subs, ctx))
+        _check_nesting(ordered, held, ctx)
+        ctx.run_data[CONVERTED] = True
+        made: list[Block] = []
+        for number, body in ordered:
+            made.extend(_sub(number, body, ctx, numbers, labels))
+        for block in held:
+            made.extend(_main_block(block, ctx, numbers, labels))
+        made.extend(self.tail)
+        return made
 
 
 def _callees_first(subs: list[tuple[int, list[Block]]], ctx: Context) -> Iterator[tuple[int, list[Block]]]:

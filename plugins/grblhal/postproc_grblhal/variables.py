@@ -12,7 +12,7 @@ arguments the fill loop is skipped and ``#30`` is left unset in C: the reader re
 
 from __future__ import annotations
 
-from postproc.expr import Value
+from postproc.ir.expr import Value
 from postproc.rs274.variables import NgcVariables
 
 CALL_ARGUMENTS = 30

@@ -39,11 +39,11 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from postproc.context import Context
-from postproc.control import Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndIf, EndRepeat, EndWhile, \
+from postproc.interp.control import Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndIf, EndRepeat, EndWhile, \
     If, Repeat, Return, SubEnd, SubStart, While
 from postproc.cycles.section import WORD_ORDER
 from postproc.dialect import Dialect
-from postproc.expr import Expr, Num
+from postproc.ir.expr import Expr, Num
 from postproc.grbl_family.writer import GrblFamilyWriter
 from postproc.ir import Block, Motion
 from postproc.rs274.codes import CodeTable

@@ -12,23 +12,24 @@ run as rs274 runs them (``postproc.interp.rules``).
 
 from __future__ import annotations
 
-from typing import Callable, ClassVar, Iterator
+from typing import Callable, ClassVar
 
 from postproc.rs274.cutter_rules import ARC_CORNERS
 from postproc.dialect import Dialect, Lazy, Reader
+from postproc.rs274.cycle_semantics import RS274 as RS274_CYCLES
 from postproc.rs274.order_of_execution import stops_after_motion
 from postproc.rs274.arc_ends import RS274NGC_ARC_END
 from postproc.lowering.structured_jumps import nest_forward_jumps
 from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
-from postproc.ir import Block
 from postproc.output.line_format import LineRule
-from postproc.lowering.lower import BlockStep, Lowering, LoweringStep
+from postproc.lowering.lazy_step import LazyStep
+from postproc.lowering.lower import Lowering
 from postproc.setup.machine_setup import MachineSetup
 from postproc.context import Context
 from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.rs274.variables import NGC_POSITION_READS
-from postproc.syntax import Pipeline
+from postproc.syntaxes.syntax import Pipeline
 from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
 
@@ -42,30 +43,11 @@ NATIVE = frozenset({
 })
 
 
-def _thread_feed_apart(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """``lathe_writer.feed_apart``, imported when a translation to LinuxCNC first runs."""
-    from .lathe_writer import feed_apart
-    return feed_apart(blocks, ctx, target)
+_thread_feed_apart = LazyStep(f"{__name__}.lathe_writer:feed_apart")
 
 
-class _SubprogramLayout(LoweringStep):
-    """``layout.subprograms_after_callers``, imported when a translation to LinuxCNC first runs."""
-
-    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        from .layout import subprograms_after_callers
-        return subprograms_after_callers.start(ctx, target)
-
-
-class _ExactStopForOneBlock(LoweringStep):
-    """``exact_stop.exact_stop_for_one_block``, imported when a translation to LinuxCNC first runs."""
-
-    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        from .exact_stop import exact_stop_for_one_block
-        return exact_stop_for_one_block.start(ctx, target)
-
-
-_subprogram_layout = _SubprogramLayout()
-_exact_stop_for_one_block = _ExactStopForOneBlock()
+_subprogram_layout = LazyStep(f"{__name__}.layout:subprograms_after_callers")
+_exact_stop_for_one_block = LazyStep(f"{__name__}.exact_stop:exact_stop_for_one_block")
 
 
 class Linuxcnc(Dialect):
@@ -129,7 +111,7 @@ class Linuxcnc(Dialect):
     after their callers, and a cycle gets the return level its source assumed (``layout``); a thread
     block's F goes on a line before it (``lathe_writer.feed_apart``: G33 refuses F); a one-shot exact stop is
     G61 for its block, then the mode before (``exact_stop``: rs274 refuses G9)."""
-    CYCLE_SEMANTICS = "rs274"
+    CYCLE_SEMANTICS = RS274_CYCLES.name
     """How the native cycles move: start below R rises to R first, G98 returns to the old Z only when
     it is above R, G91 R is measured from the Z at the block's start, G74/G84/G89 feed out to the
     clear level, G73/G83 clearances are fixed (0.254 mm / 0.010 in)."""

@@ -1,7 +1,7 @@
 """LinuxCNC's active comments, which do something when the program runs: ``(MSG,text)`` shows the operator
 a message, ``(DEBUG,..)`` and ``(PRINT,..)`` print text with parameter values, ``(LOG..)`` write a log
 file, ``(PROBEOPEN ..)``/``(PROBECLOSE)`` record probe points, ``(ABORT,..)`` stops the program and
-``(PY,..)`` runs Python. ``COMMENTS`` is LinuxCNC's comment syntax with them (``postproc.comments``): a
+``(PY,..)`` runs Python. ``COMMENTS`` is LinuxCNC's comment syntax with them (``postproc.syntaxes.comments``): a
 comment written from another dialect, or a template's value, never makes one. Every other dialect reads them as inert
 comments: a translation keeps their text and warns, naming each one with its location (once per source
 comment, however often a loop runs it). Between LinuxCNC programs they are kept as they are.
@@ -12,7 +12,7 @@ from __future__ import annotations
 import re
 from typing import Iterator
 
-from postproc.comments import CommentSyntax
+from postproc.syntaxes.comments import CommentSyntax
 from postproc.context import Context
 from postproc.dialect import Dialect
 from postproc.ir import Block

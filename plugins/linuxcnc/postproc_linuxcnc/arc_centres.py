@@ -22,9 +22,9 @@ from typing import Any, Final
 
 from postproc.context import Context
 from postproc.errors import ProgramError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, Comments, Motion
-from postproc.state import MM_PER_INCH, PLANE_AXES
+from postproc.ir.state import MM_PER_INCH, PLANE_AXES
 
 GROUP: Final = "13"
 """The modal group of G90.1/G91.1 in the code table (LinuxCNC's ``GM_IJK_DISTANCE_MODE``; kind

@@ -13,11 +13,12 @@ from typing import Any, ClassVar, Mapping
 from postproc.compensation.dynamic import DynamicCutterCompensation
 from postproc.context import Context
 from postproc.errors import ProgramError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, NativeCode, PathControl
 from postproc.rs274.codes import CodeTable, g_key
 from postproc.rs274 import ngc_lathe as lathe
 from postproc.rs274.ngc_block_syntax import REAL_LETTERS, NgcWordBlockSyntax
+from postproc.frames.section import SHARED_OFFSET
 
 from . import arc_centres
 from .codes import CODES, M_GROUPS
@@ -62,7 +63,7 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
     DATA_INCREMENTAL: ClassVar[bool] = False
     DATA_P0_ACTIVE: ClassVar[bool] = True
     DATA_ROTATION: ClassVar[bool] = True
-    FRAME_RULES: ClassVar[str] = "rs274"
+    FRAME_RULES: ClassVar[str] = SHARED_OFFSET
     DYNAMIC_LENGTH_BARE: ClassVar[bool] = True
     """A bare ``G43.1`` keeps the length in force [V: rs274 2.9, ``G43.1 Z3`` then ``G43.1`` prints
     ``USE_TOOL_LENGTH_OFFSET(0 0 3, ...)`` again]."""

@@ -19,9 +19,9 @@ located error. A computed ``M#1`` is not a call: the block syntax refuses an M98
 
 from __future__ import annotations
 
-from postproc.control import Call, Return
+from postproc.interp.control import Call, Return
 from postproc.errors import Location, ParseError
-from postproc.expr import Expr, Num
+from postproc.ir.expr import Expr, Num
 from postproc.ir import Block
 
 INTEGER_TOLERANCE = 0.0001

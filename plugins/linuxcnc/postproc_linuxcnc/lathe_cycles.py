@@ -30,10 +30,10 @@ from __future__ import annotations
 from typing import Any, Callable, Final
 
 from postproc.context import Context
-from postproc.control import ASSIGN, SubEnd, SubStart
+from postproc.interp.control import ASSIGN, SubEnd, SubStart
 from postproc.cycles.turning.profile import TurnMove
 from postproc.errors import Location, PostprocError, ProgramError, UnsupportedError
-from postproc.expr import Binary, Expr, Func, Num, Unary, Var
+from postproc.ir.expr import Binary, Expr, Func, Num, Unary, Var
 from postproc.interp.variables import RUN_VARIABLES_KEY
 from postproc.ir import Block, Motion, NativeCode
 from postproc.rs274.arc_ends import RS274NGC_ARC_END
@@ -278,7 +278,7 @@ def _evaluated(words: list[tuple[str, str]], values: dict[str, Any], ctx: Contex
     The other axes read as the machine stands (``FrameReadings``)."""
     # imported here: the interpreter's modules import decimal, which a plain translation to LinuxCNC must not
     # pay for at start-up (tests/test_startup_imports.py); only a cycle's profile comes here
-    from postproc.evaluation import evaluate_number
+    from postproc.interp.evaluation import evaluate_number
     from postproc.interp.run_state import is_number
 
     from postproc.frames.parameters import FrameReadings

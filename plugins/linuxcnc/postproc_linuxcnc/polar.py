@@ -29,11 +29,11 @@ from typing import Callable, Final, Iterable, Iterator
 
 from postproc.context import Context
 from postproc.errors import Location, ProgramError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.interp import spell_number
 from postproc.ir import Block
-from postproc.polar import clean as _clean, polar_absolute as _absolute, polar_turned as _turned
-from postproc.syntax import Syntax
+from postproc.geometry.polar import clean as _clean, polar_absolute as _absolute, polar_turned as _turned
+from postproc.syntaxes.syntax import Syntax
 
 POLAR: Final = ("@", "^")
 """The polar addresses: radius, angle."""

@@ -17,10 +17,10 @@ from typing import Any
 
 from postproc.context import Context
 from postproc.errors import ProgramError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, Motion
 from postproc.rs274.codes import g_key
-from postproc.synchronised_tap import RigidTap
+from postproc.lowering.synchronised_tap import RigidTap
 
 MODE = "rigid_tap"
 """The motion mode of the code table's G33.1 row (never left in the IR: ``read_rigid_tap`` replaces it)."""

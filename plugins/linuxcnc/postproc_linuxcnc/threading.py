@@ -40,7 +40,7 @@ from postproc.errors import ProgramError
 from postproc.ir import Block, Motion
 from postproc.rs274.lathe_threading import (compound_angle, place_thread_moves, spring_passes, thread_refusal,
                                             thread_start, thread_words)
-from postproc.thread_lead import lead_along_major
+from postproc.geometry.thread_lead import lead_along_major
 
 from .codes import CODES
 

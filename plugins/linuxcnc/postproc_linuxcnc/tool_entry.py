@@ -30,7 +30,7 @@ from typing import Any, Final
 
 from postproc.context import Context
 from postproc.errors import ProgramError
-from postproc.expr import Expr
+from postproc.ir.expr import Expr
 from postproc.ir import Block, DataSetting
 
 TABLE: Final = "tool_entry"

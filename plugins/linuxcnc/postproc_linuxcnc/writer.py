@@ -35,17 +35,17 @@ from postproc.errors import Location, UnsupportedError
 from postproc.ir import Block, ProgramControl, Section
 from postproc.context import Context
 from postproc.dialect import Dialect
-from postproc.control import (
+from postproc.interp.control import (
     Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndFor, EndIf, EndRepeat, EndWhile, For, If, Repeat,
     Return, SubEnd, SubStart, While,
 )
-from postproc.expr import Binary, Expr, Num, Var
+from postproc.ir.expr import Binary, Expr, Num, Var
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.expressions import LINUXCNC_SPELLING, ExprSpelling
 from postproc.rs274.oword import spell_assignments, spell_oword
 from postproc.rs274.writer import WordWriter
 from postproc.output.line_feeds import LineFeeds
-from postproc.subprogram_names import NameRule, SubprogramNames
+from postproc.interp.subprogram_names import NameRule, SubprogramNames
 
 from .active_comments import COMMENTS
 from .codes import CODES
@@ -198,7 +198,7 @@ class LinuxcncWriter(WordWriter):
         return words
 
     def rigid_tap_words(self, s: Any, block: Block) -> list[str]:
-        """``G33.1 Z.. K..`` (``postproc.synchronised_tap``): the end point, K the pitch, I the way out's
+        """``G33.1 Z.. K..`` (``postproc.lowering.synchronised_tap``): the end point, K the pitch, I the way out's
         speed factor. Inside an expansion the end point is absolute (G90 first, when incremental). G33.1 has
         no dwell at the bottom [V: g-code.adoc, the tap reverses on reaching the end point]."""
         if s.dwell:

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from typing import Mapping
 
-from .ir import Section
+from . import Section
 
 AFTER_MOTION = frozenset(("SpindleOrientation", "ProgramControl"))
 """Sections that always act after the block's motion."""

@@ -11,8 +11,8 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from .errors import Location
-from .ir import Block
+from ..errors import Location
+from . import Block
 
 if TYPE_CHECKING:
     from typing import Callable, TextIO

@@ -23,10 +23,10 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any, ClassVar, Final, Iterator
 
-from .errors import ConfigError
-from .expr import Expr, Var, expr_from_xml
-from .ir import Section
-from .xmlio import XAttr, XFactory, lxml_etree, where
+from ..errors import ConfigError
+from ..ir.expr import Expr, Var, expr_from_xml
+from ..ir import Section
+from ..xmlio import XAttr, XFactory, lxml_etree, where
 
 if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)
     from lxml import etree

@@ -25,9 +25,9 @@ from functools import partial
 from itertools import chain, islice
 from typing import Callable, Final, Generator, Iterable, Iterator, TextIO
 
-from .context import Context
-from .errors import Location, ParseError, character_name
-from .numbers import MAX_DIGITS as NUMBER_DIGITS
+from ..context import Context
+from ..errors import Location, ParseError, character_name
+from ..numbers import MAX_DIGITS as NUMBER_DIGITS
 
 MAX_DIGITS: Final = NUMBER_DIGITS
 """The most digits read in one number: more than any controller's registers hold, and within a float's

@@ -1,6 +1,6 @@
 """Evaluation of expression trees, with the vacancy rules of each dialect family.
 
-Every neutral operator and function has one semantics (``postproc.expr``); this module is where it is
+Every neutral operator and function has one semantics (``postproc.ir.expr``); this module is where it is
 defined. What was verified, and how ("rs274" = run through ``/usr/bin/rs274``, LinuxCNC 2.9.0~pre1 as
 packaged in Debian 12, with ``(DEBUG, #1)``, pinned in ``tests/test_evaluate.py``; "src" = LinuxCNC
 source ``interp_execute.cc``/``interp_read.cc``/``interp_internal.cc``; "[K]" = Fanuc manual facts from
@@ -61,16 +61,16 @@ Arithmetic (``Env.arithmetic``, the dialect family's): ``DOUBLE`` computes ``sin
 ``asin(x) * 180 / pi`` in IEEE double (Fanuc [K]: IEEE double with the trigonometric functions'
 absolute error guaranteed, not their relative error; ISG and Fagor [?]: not published, chosen so).
 ``X86_64_C`` is rs274's C on x86-64: ``sin((x * M_PIl) / 180.0)`` with the argument in ``long double``,
-the inverse functions' double result times 180.0 divided by ``M_PIl`` (src; ``postproc.long_double``),
+the inverse functions' double result times 180.0 divided by ``M_PIl`` (src; ``postproc.interp.long_double``),
 so ``SIN[180]`` is -5.0e-20 (``FIX[SIN[180]]`` = -1) and ``COS[90] LT 0`` is 1 (rs274). SIN, COS, ASIN,
 ACOS and ATAN agree bit for bit with the packaged rs274 and glibc; TAN is the correctly rounded
 ``tanl``, which glibc's misses by one unit in the last place in about 1 case in 20,000 (TAN[271] among
 them: ``tests/test_long_double.py``).
 
-Vacancy (``Vacancy.FANUC``): a ``Var`` evaluates to None when vacant (so ``#2=#1`` copies vacancy, and
+Vacancy (``Vacancy.NULL``): a ``Var`` evaluates to None when vacant (so ``#2=#1`` copies vacancy, and
 a word whose value is None is omitted); every operator and function reads None as 0 (``#1*5``,
 ``#1+#1`` and ``-#1`` are 0), except ``eq``/``ne``, which tell vacant from 0 (``#1 EQ #0`` is true,
-``#1 EQ 0`` false). ``Vacancy.LINUXCNC``: an unset numbered parameter reads 0, an unset named one is
+``#1 EQ 0`` false). ``Vacancy.ZERO``: an unset numbered parameter reads 0, an unset named one is
 an error. Results are never None except for a bare variable; NaN and infinities are refused.
 """
 
@@ -81,7 +81,7 @@ from decimal import ROUND_HALF_UP, Decimal
 from typing import Callable
 
 from . import long_double
-from .expr import Arithmetic, Binary, Env, EvalError, Expr, Func, Num, Unary, Vacancy, Value, Var, VarKey
+from ..ir.expr import Arithmetic, Binary, Env, EvalError, Expr, Func, Num, Unary, Vacancy, Value, Var, VarKey
 
 TOLERANCE_EQUAL = 1e-4
 """LinuxCNC 2.9.0's tolerance for EQ/NE (``eq_tol``/``ne_tol``)."""
@@ -131,7 +131,7 @@ def var_key(var: Var, env: Env) -> VarKey:
     value = evaluate(var.index, env)
     if value is None:
         raise EvalError(f"the variable number in {describe(var)} is vacant")
-    if env.vacancy is Vacancy.FANUC:
+    if env.vacancy is Vacancy.NULL:
         return int(_round_half_away(value))
     nearest = round(value)
     if abs(value - nearest) > INTEGER_TOLERANCE:
@@ -142,7 +142,7 @@ def var_key(var: Var, env: Env) -> VarKey:
 def _read(var: Var, env: Env) -> Value:
     key = var_key(var, env)
     value = env.read(key)
-    if value is None and env.vacancy is Vacancy.LINUXCNC:
+    if value is None and env.vacancy is Vacancy.ZERO:
         if isinstance(key, str):
             raise EvalError(f"named parameter #<{key}> is not defined")
         return 0.0
@@ -523,7 +523,7 @@ class MappingEnv:
         return self._increment
 
     def read(self, key: VarKey) -> Value:
-        if key == 0 and self._vacancy is Vacancy.FANUC:
+        if key == 0 and self._vacancy is Vacancy.NULL:
             return None  # #0 is always vacant
         return self.values.get(key)
 

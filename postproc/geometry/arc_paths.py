@@ -1,8 +1,8 @@
 """How far apart two controllers cut an arc: the largest distance between two arc paths, computed, not
-sampled to a bound (``verify`` compares arcs by it; ``postproc.arc_end`` judges a centre correction by it).
+sampled to a bound (``verify`` compares arcs by it; ``postproc.geometry.arc_end`` judges a centre correction by it).
 
-An arc path (``ArcPath``) is what the simulator draws (``postproc.geometry.arc_points``) once a controller's
-rule has placed the centre (``postproc.arc_end``): from the start about the centre, the radius changing evenly
+An arc path (``ArcPath``) is what the simulator draws (``postproc.geometry.arcs.arc_points``) once a controller's
+rule has placed the centre (``postproc.geometry.arc_end``): from the start about the centre, the radius changing evenly
 with the angle from the start radius to the end radius (a circle where they are equal, a spiral otherwise),
 every axis outside the plane moving evenly with the angle (a helix). Two controllers' paths for one programmed
 arc differ where their rules differ: one keeps the programmed centre and runs a spiral, another moves the centre
@@ -40,7 +40,7 @@ from __future__ import annotations
 import math
 from typing import Callable, Final, Mapping
 
-from .geometry import PLANE_INDEX
+from .arcs import PLANE_INDEX
 
 _TWO_PI: Final = 2.0 * math.pi
 _STEP: Final = math.pi / 8.0

@@ -2,7 +2,7 @@
 
 A subprogram is named by its definition (Fanuc ``O2000`` after the main program, LinuxCNC ``o100 sub``,
 ISG ``%L SUB``) and by every call (``M98 P``, ``G65 P``, ``o100 call``, ``LL SUB``). The neutral name
-(``postproc.control``: ``"2000"``, ``"<probe>"``) is the source's; the target may not be able to write
+(``postproc.interp.control``: ``"2000"``, ``"<probe>"``) is the source's; the target may not be able to write
 it (Fanuc numbers its programs, ISG names them). A writer keeps one ``SubprogramNames`` and asks it for
 the definition and for every call, so both always say the same name: the first time a name is met
 decides its target name, whichever of the definition or a call comes first.
@@ -15,8 +15,8 @@ number has been changed (the value would call the source's number).
 
 from __future__ import annotations
 
-from .errors import UnsupportedError
-from .records import record
+from ..errors import UnsupportedError
+from ..records import record
 
 
 @record(frozen=True)
@@ -34,7 +34,7 @@ class NameRule:
     one_kind: bool = False
     """How a subprogram is defined says how it is called (LinuxCNC: ``o<n> sub`` only by ``o<n> call``, a
     new level of locals; ``O<n>`` .. ``M99`` only by ``M98``, which shares the caller's): every call of
-    one subprogram, and its definition, are of one kind (``postproc.control.CALL_KINDS``)."""
+    one subprogram, and its definition, are of one kind (``postproc.interp.control.CALL_KINDS``)."""
 
 
 class SubprogramNames:

@@ -6,8 +6,8 @@ from __future__ import annotations
 from typing import Callable, Iterable
 
 from .control import CONTROL, LABEL, Goto, GotoLabel
-from .expr import Num
-from .ir import Block
+from ..ir.expr import Num
+from ..ir import Block
 
 
 def _targets(blocks: Iterable[Block]) -> tuple[set[int], set[str]]:

@@ -1,16 +1,16 @@
 """Conditions rewritten without changing when they hold: the negation a jump needs to skip a branch.
 
-A control statement's condition is true when its value is non-zero (``postproc.control``). A target that
+A control statement's condition is true when its value is non-zero (``postproc.interp.control``). A target that
 spells an ``IF .. ELSE`` or a loop tested at its end as conditional jumps (Fanuc Macro B) or an
 ``UNTIL c`` as a ``do .. while`` (LinuxCNC) jumps on the opposite condition. ``negated`` builds it from the
 same operators, so each target spells it with what it already has: a comparison flips (``lt`` <-> ``ge``,
-exact as the operators are: no operand is NaN, ``postproc.evaluation`` refuses one), ``and``/``or`` follow
+exact as the operators are: no operand is NaN, ``postproc.interp.evaluation`` refuses one), ``and``/``or`` follow
 De Morgan, and any other value ``v`` becomes ``v == 0``.
 """
 
 from __future__ import annotations
 
-from .expr import Binary, Expr, Num, Unary
+from ..ir.expr import Binary, Expr, Num, Unary
 
 _FLIPPED = {"eq": "ne", "ne": "eq", "gt": "le", "le": "gt", "ge": "lt", "lt": "ge",
             "eq_tol": "ne_tol", "ne_tol": "eq_tol"}

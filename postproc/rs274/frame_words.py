@@ -1,4 +1,4 @@
-"""How an RS274-family reader turns a frame code (its table's kind ``frame``) and the words it takes into a
+"""The RS274 family base's reading of frame codes: how its reader turns a frame code (its table's kind ``frame``) and the words it takes into a
 ``FrameChange``.
 
 Words per kind (what is not taken stays for the rest of the block, which refuses a word nobody takes):
@@ -18,9 +18,9 @@ from typing import Any, Final
 
 from ..context import Context
 from ..errors import ProgramError
-from ..expr import Expr
+from ..ir.expr import Expr
 from ..ir import AXES, Block
-from .section import FrameChange
+from ..frames.section import LAYERED, ROTATE_FIRST, FrameChange
 
 AXIS_WORDS: Final = frozenset(AXES)
 _NO_WORDS: Final = frozenset(("origin_clear", "origin_suspend", "origin_restore", "rotate_off", "scale_off", "polar",
@@ -46,7 +46,7 @@ def read_frame(block: Block, ctx: Context, kind: str, code: str, values: dict[st
         plane = ctx.state.plane
         words = {k: v for k, v in values.items() if k in plane}
         third = {"XY": "Z", "ZX": "Y", "YZ": "X"}[plane]
-        if rules == "isg" and third in values:
+        if rules == ROTATE_FIRST and third in values:
             # [V] Beckhoff TF5200 diagnosis ID 22156: only the plane's two main axes give the centre
             raise ProgramError(f"{code} takes the centre on the plane's two axes: {third} belongs in the next block", at)
         if "R" in values:
@@ -72,7 +72,7 @@ def _angle(block: Block, value: Any, rules: str) -> float | Expr:
     """G68's R in degrees."""
     if isinstance(value, Expr):
         return value
-    if rules != "fanuc":
+    if rules != LAYERED:
         return float(value)
     written = _text(block, "R")
     return float(written) if "." in written else int(written) * _PER_THOUSAND

@@ -14,7 +14,7 @@ from __future__ import annotations
 import re
 from typing import Callable
 
-from .records import record
+from ..records import record
 
 _BREAKS = re.compile(r"[\x00-\x1f\x7f\u0085\u2028\u2029]")
 """Line breaks and control characters: a line break ends a ``;`` comment and a block."""

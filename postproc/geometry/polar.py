@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 from typing import Final
 
-from .errors import Location, ProgramError
+from ..errors import Location, ProgramError
 
 EPS: Final = 1e-12
 """Closer to the origin than this is at the origin (no angle)."""

@@ -14,11 +14,11 @@ import abc
 from pathlib import Path
 from typing import TYPE_CHECKING, Iterable, Iterator
 
-from .errors import ConfigError, Location, PostprocError
-from .ir import Block
-from .context import Context
-from .source_map import locate
-from .xmlio import DEFAULT, XFactory, XmlNode, lxml_etree, parse_xml_file, where
+from ..errors import ConfigError, Location, PostprocError
+from ..ir import Block
+from ..context import Context
+from ..ir.source_map import locate
+from ..xmlio import DEFAULT, XFactory, XmlNode, lxml_etree, parse_xml_file, where
 
 if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)
     from lxml import etree

@@ -15,8 +15,8 @@ from __future__ import annotations
 import enum
 from typing import TYPE_CHECKING, Any, Protocol, Union
 
-from .errors import ConfigError, ProgramError
-from .xmlio import register_computed_value_reader, XFactory, XmlNode, where, lxml_etree
+from ..errors import ConfigError, ProgramError
+from ..xmlio import register_computed_value_reader, XFactory, XmlNode, where, lxml_etree
 
 if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)
     from lxml import etree
@@ -318,19 +318,22 @@ def register_expressions(factory: XFactory | None = None) -> None:
 
 
 class Vacancy(enum.Enum):
-    """How a variable without a value reads: the dialect family's rule."""
+    """How a variable without a value reads: named after the behaviour, a family base's ``Env`` chooses it
+    (the RS274 family's: ``postproc.rs274.variables``, Macro B ``NULL``, RS274/NGC ``ZERO``)."""
 
-    FANUC = "fanuc"
+    NULL = "null"
     """Vacant is a value of its own (``#0``, unset locals and commons): ``Var`` evaluates to None;
-    arithmetic, functions and ``GT GE LT LE`` treat it as 0; ``EQ``/``NE`` tell it from 0."""
-    LINUXCNC = "linuxcnc"
-    """No vacancy: an unset numbered parameter reads 0, an unset named parameter is an error."""
+    arithmetic, functions and ``GT GE LT LE`` treat it as 0; ``EQ``/``NE`` tell it from 0. A computed
+    variable number is rounded to the nearest integer."""
+    ZERO = "zero"
+    """No vacancy: an unset numbered parameter reads 0, an unset named parameter is an error. A computed
+    variable number must be an integer."""
 
 
 class Arithmetic(enum.Enum):
     """How the controller computes the neutral functions: the dialect family's rule, as vacancy is.
     Both mean the same functions (``SIN`` is the sine of degrees); they differ in the last bits, which
-    ``FIX``, ``FUP`` and the comparisons turn into whole units (``postproc.evaluation``)."""
+    ``FIX``, ``FUP`` and the comparisons turn into whole units (``postproc.interp.evaluation``)."""
 
     DOUBLE = "double"
     """IEEE double throughout; an angle in degrees becomes radians as ``x * pi / 180`` in double, so
@@ -338,7 +341,7 @@ class Arithmetic(enum.Enum):
     X86_64_C = "x86_64_c"
     """What C computes on x86-64 Linux where the interpreter scales angles with ``M_PIl`` in ``long double``
     and stores the result in a double (LinuxCNC's ``rs274``): ``SIN[180]`` is -5.0166e-20 and ``COS[90]``
-    -2.5083e-20 (``postproc.long_double``); ``ROUND`` converts through a C ``int``."""
+    -2.5083e-20 (``postproc.interp.long_double``); ``ROUND`` converts through a C ``int``."""
 
 
 class Env(Protocol):

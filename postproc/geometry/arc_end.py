@@ -18,9 +18,9 @@ from dataclasses import replace
 from typing import Final
 
 from .arc_paths import ArcPath, deviation
-from .geometry import arc_sweep
-from .records import record
-from .state import MM_PER_INCH
+from .arcs import arc_sweep
+from ..records import record
+from ..ir.state import MM_PER_INCH
 
 SPIRAL: Final = "spiral"
 """The controller keeps the programmed centre and lets the radius change evenly from the start radius to
@@ -150,7 +150,7 @@ class ArcEndRule:
                    clockwise: bool, floor: float = -1.0) -> float:
         """How far the circle this rule runs (about the centre it moves to) lies from a spiral controller's path for
         the same arc, the spiral from ``s`` to ``e`` about ``c`` whose radius changes evenly with the angle: the
-        largest distance between the two paths, as ``verify`` measures it (``postproc.arc_paths.deviation``,
+        largest distance between the two paths, as ``verify`` measures it (``postproc.geometry.arc_paths.deviation``,
         with its ``floor``); 0 for a ``SPIRAL`` rule."""
         if self.runs == SPIRAL:
             return 0.0
@@ -195,4 +195,4 @@ the source's controller runs as a spiral but the target's would refuse (``postpr
 
 NEUTRAL_ARC_END: Final = ArcEndRule(metric=0.01, inch=0.01 / MM_PER_INCH)
 """The rule of a dialect that declares none: 0.01 mm in any units, the path a spiral (the project's
-rule before the controllers' own were modelled: ``postproc.geometry.ARC_TOLERANCE_MM``)."""
+rule before the controllers' own were modelled: ``postproc.geometry.arcs.ARC_TOLERANCE_MM``)."""

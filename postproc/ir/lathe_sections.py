@@ -11,8 +11,8 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from .expr import Expr
-from .ir import Section
-from .xmlio import XAttr, XFactory, computed_value, decode, encode, lxml_etree
+from . import Section
+from ..xmlio import XAttr, XFactory, computed_value, decode, encode, lxml_etree
 
 if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)
     from lxml import etree
@@ -81,7 +81,7 @@ class ThreadLead(Section):
     thread's major axis (Z where the move's Z travel is at least its X travel as a radius, else X), in
     program units; the block's feed rate F stays what it was. It is what a control writes beside its
     thread code where F is no lead (LinuxCNC's ``G33 K``, which it measures along the path: the reader
-    converts it, ``postproc.thread_lead``); a control whose thread move takes its lead from F (Fanuc
+    converts it, ``postproc.geometry.thread_lead``); a control whose thread move takes its lead from F (Fanuc
     ``G32 F``) has none."""
 
     XNAME = KEY = "ThreadLead"

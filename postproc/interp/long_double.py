@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from typing import Callable
 
-from .expr import EvalError
+from ..ir.expr import EvalError
 
 SIGNIFICAND = 64
 """Bits of the x87 extended format's significand."""

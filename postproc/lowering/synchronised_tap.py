@@ -34,9 +34,9 @@ from typing import TYPE_CHECKING, Any
 
 from mypy_extensions import mypyc_attr
 
-from .expr import Expr
-from .ir import Block, CompoundMotion, Section, axes_from_xml, axes_to_xml
-from .xmlio import computed_value, lxml_etree
+from ..ir.expr import Expr
+from ..ir import Block, CompoundMotion, Section, axes_from_xml, axes_to_xml
+from ..xmlio import computed_value, lxml_etree
 
 if TYPE_CHECKING:
     from lxml import etree

@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 from typing import Iterator
 
-from .errors import ProgramError
+from ..errors import ProgramError
 
 PLACES = 6
 """Decimals of every number in a toolpath (1 nm): enough for any controller, stable across float noise."""
