@@ -106,7 +106,10 @@ def resolve_cutter_compensation(blocks: Iterator[Block], ctx: Context, target: t
 
 
 def thread_feed_apart(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """``postproc.rs274.ngc_lathe_writer.feed_apart``, imported when a translation first lowers for grblHAL."""
+    """``postproc.rs274.ngc_lathe_writer.feed_apart``, imported when a lathe program is first lowered for grblHAL (a
+    mill's has no thread moves: ``feed_apart`` passes it untouched)."""
+    if not ctx.lathe:
+        return blocks
     from postproc.rs274.ngc_lathe_writer import feed_apart
     return feed_apart(blocks, ctx, target)
 

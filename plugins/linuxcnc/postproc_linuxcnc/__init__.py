@@ -43,7 +43,10 @@ NATIVE = frozenset({
 
 
 def _thread_feed_apart(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """``lathe_writer.feed_apart``, imported when a translation to LinuxCNC first runs."""
+    """``lathe_writer.feed_apart``, imported when a lathe program is first translated to LinuxCNC (a mill's has no
+    thread moves: ``feed_apart`` passes it untouched, and a mill's run imports no lathe writing)."""
+    if not ctx.lathe:
+        return blocks
     from .lathe_writer import feed_apart
     return feed_apart(blocks, ctx, target)
 
