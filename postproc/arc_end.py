@@ -221,43 +221,65 @@ def circle_gap_bounds(s: tuple[float, float], e: tuple[float, float], c: tuple[f
        widen both sides.
 
     Conditions: d <= rho_min / 2 (``deviation``'s own matching, not its sampled search), rho_min (rho_min - d)
-    > |k| d, and 2 w + 1e-6 < T < 2 pi - 2 w - 1e-6 (``arc_sweep`` reads a sweep under 1e-9 as a whole turn)."""
-    r0 = math.hypot(s[0] - c[0], s[1] - c[1])
-    r1 = math.hypot(e[0] - c[0], e[1] - c[1])
-    rho_min = min(r0, r1)
+    > |k| d, and 2 w + 1e-6 < T < 2 pi - 2 w - 1e-6 (``arc_sweep`` reads a sweep under 1e-9 as a whole turn; 2 w
+    taken as pi d / (rho_min - d), which is at least it).
+
+    Written with conditionals, not ``min``/``max``, and with the ends' directions taken from the end points, not
+    trigonometry: every arc an ISG or Fagor translation reads comes here (a builtin call is ~500 instructions)."""
+    sx, sy = s[0] - c[0], s[1] - c[1]
+    ex, ey = e[0] - c[0], e[1] - c[1]
+    r0 = math.hypot(sx, sy)
+    r1 = math.hypot(ex, ey)
+    rho_min = r0 if r0 < r1 else r1
     dx, dy = c[0] - m[0], c[1] - m[1]
     d = math.hypot(dx, dy)
-    span = abs(turn)
-    if not (0.0 < span < _TWO_PI and d <= 0.5 * rho_min and rho_min > 0.0):
+    span = turn if turn > 0.0 else -turn
+    if not (0.0 < span < _TWO_PI and 0.0 < rho_min and d <= 0.5 * rho_min):
         return None
     k = (r1 - r0) / span
-    if rho_min * (rho_min - d) <= abs(k) * d:
+    if rho_min * (rho_min - d) <= (k if k > 0.0 else -k) * d:
         return None
-    w = 2.0 * math.asin(min(1.0, d / (rho_min - d))) + 1e-6
+    w = math.pi * d / (rho_min - d) + 1e-6  # at least 2 asin(d / (rho_min - d)) (asin(y) <= pi y / 2 on [0, 1])
     if not w < span < _TWO_PI - w:
         return None
     radius = math.hypot(s[0] - m[0], s[1] - m[1])
-    wobble = abs(math.hypot(e[0] - m[0], e[1] - m[1]) - radius)
-    sign = 1.0 if turn > 0.0 else -1.0
-    a0 = math.atan2(s[1] - c[1], s[0] - c[0])
-    found = [0.0, span]
-    if d > 0.0 and abs(k) <= d:
-        phase = math.atan2(dy, dx)
-        base = math.asin(sign * k / d)
-        for x in (base, math.pi - base):
-            t = (sign * (x + phase - a0)) % _TWO_PI
-            if t <= span:
-                found.append(t)
-    high = -math.inf
-    low = math.inf
-    for t in found:
-        angle = a0 + sign * t
-        p = r0 + k * t + dx * math.cos(angle) + dy * math.sin(angle) - radius
-        high = max(high, p)
-        low = min(low, p)
+    wobble = math.hypot(e[0] - m[0], e[1] - m[1]) - radius
+    if wobble < 0.0:
+        wobble = -wobble
+    # P at the ends (d cos(angle - angle of delta) = delta . u, u the end's direction from c), and where its
+    # derivative vanishes: sin(x) = sign k / d with x the angle less delta's, at tau = sign (x + delta's angle
+    # less the start's) modulo a turn; P there is r0 + k tau + d cos(x).
+    high = low = r0 + (dx * sx + dy * sy) / r0 - radius
+    p = r1 + (dx * ex + dy * ey) / r1 - radius
+    if p > high:
+        high = p
+    if p < low:
+        low = p
+    if 0.0 < d and (k if k > 0.0 else -k) <= d:
+        sign = 1.0 if turn > 0.0 else -1.0
+        lean = sign * k / d
+        base = math.asin(lean)
+        rise = d * math.sqrt(1.0 - lean * lean)
+        offset = math.atan2(sx * dy - sy * dx, sx * dx + sy * dy)  # delta's angle less the start's (about c)
+        t = (sign * (base + offset)) % _TWO_PI
+        if t <= span:
+            p = r0 + k * t + rise - radius
+            if p > high:
+                high = p
+            if p < low:
+                low = p
+        t = (sign * (math.pi - base + offset)) % _TWO_PI
+        if t <= span:
+            p = r0 + k * t - rise - radius
+            if p > high:
+                high = p
+            if p < low:
+                low = p
     eps = d * d / (2.0 * (rho_min - d))
-    slack = wobble + _ROUNDING * (max(r0, r1) + radius + d + 1.0)
-    return (max(0.0, max(high, -low - eps) - slack), max(high + eps, -low) + slack)
+    slack = wobble + _ROUNDING * (r0 + r1 + radius + d + 1.0)
+    upper = high + eps if high + eps > -low else -low
+    lower = high if high > -low - eps else -low - eps
+    return (lower - slack if lower > slack else 0.0), upper + slack
 
 
 _TWO_PI: Final = 2.0 * math.pi
