@@ -51,7 +51,7 @@ def postproc_register_xml(factory: XFactory) -> None:
 def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
     from . import patterns
     from .lowering.feed_first import check_blocks
-    from .cycles.lathe_lowering import expand_lathe_cycles
+    from .lowering.lathe_steps import expand_lathe_cycles, index_turret
     from .cycles.lowering import expand_canned_cycles
     from .cycles.rigid_tap_lowering import resolve_rigid_taps
     from .frames import evaluate_frames
@@ -67,7 +67,6 @@ def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
     from .lowering.stored_offsets import hold_stored_offsets
     from .lowering.tool_entries import write_tool_entries
     from .lowering.units_at_start import write_units_at_start
-    from .rs274.lathe_tool_index import index_turret
     register(check_blocks)  # first: it sees every expansion before a native target's are dropped
     register(patterns.expand_hole_patterns)  # before the cycles: it makes a repeat of the cycle per point
     register(evaluate_frames)  # before the cycles: a cycle under a frame is expanded at carried points

@@ -43,10 +43,15 @@ OTHER_DIALECTS = ("dialects.fagor", "dialects.gsk", "dialects.isg", "postproc_gr
 """Every installed dialect but Fanuc (the built-ins and the plugins in plugins/)."""
 NOT_FOR_A_PLAIN_TRANSLATION = ("postproc.transforms.carry", "postproc.transforms.units", "postproc.rs274.lathe_cycles",
                                "postproc.cycles.turning", "postproc_linuxcnc.block_syntax", "postproc_linuxcnc.program",
-                               "postproc.rs274.macro_jumps", "postproc.rs274.lean_controller")
+                               "postproc.rs274.macro_jumps", "postproc.rs274.lean_controller",
+                               "postproc.cycles.lathe_lowering", "postproc.cycles.lathe_offsets",
+                               "postproc.rs274.lathe_tool_index", "postproc_linuxcnc.lathe_writer",
+                               "postproc.rs274.ngc_lathe_writer", "postproc.rs274.ngc_lathe", "postproc.geometry.thread_lead")
 """What a plain mill translation to LinuxCNC has no use for: the program transforms' work (``--transform``,
 ``--units``: ``postproc.transforms.apply``), a lathe's cycle reader and turning cycles (``LatheCycleSyntax`` is
-registered lazily), the target's reading side (its block syntax and program step: the keep check and
+registered lazily), a lathe's lowering (its cycles' expansion and the turret's index:
+``postproc.lowering.lathe_steps``) and writing (LinuxCNC's thread feed step imports it for a lathe only),
+the target's reading side (its block syntax and program step: the keep check and
 ``TARGET_OMITS_VACANT`` build the target's pipeline when a program that computes first asks, ``postproc.api``),
 and the lowering steps of other targets that registering their dialects named (Fanuc's ``number_jumps``, grbl's
 and grblHAL's lean-controller steps: each imported when a translation first lowers for that target)."""
@@ -99,7 +104,8 @@ def test_a_plain_translation_loads_no_transform_lathe_or_target_reader(tmp_path:
     ("G0 X1. Y2.\nM30\n", "linuxcnc", ("--units", "inch"), ("postproc.transforms.units",)),
     ("G0 X1. Y2.\nM30\n", "linuxcnc", ("--transform", "translate 1,2"), ("postproc.transforms.carry",)),
     ("G0 X20. Z2. S500 M3\nG1 Z-10. F0.2\nM30\n", "linuxcnc",
-     ("--machine", str(ROOT / "examples/setups/fanuc_0i_tf.xml")), ("postproc.rs274.lathe_cycles",)),
+     ("--machine", str(ROOT / "examples/setups/fanuc_0i_tf.xml")),
+     ("postproc.rs274.lathe_cycles", "postproc.cycles.lathe_lowering", "postproc_linuxcnc.lathe_writer")),
     ("G0 X1. Y2.\nM30\n", "fanuc", (), ("postproc.rs274.macro_jumps",)),
     ("G0 X1. Y2.\nM30\n", "grbl", (), ("postproc.rs274.lean_controller",)),
     ("G0 X1. Y2.\nM30\n", "grblhal", (), ("postproc.rs274.lean_controller",)),
@@ -226,11 +232,23 @@ def test_listing_the_dialects_imports_no_reader_or_writer(tmp_path: Path) -> Non
 
 def test_the_version_imports_no_command(tmp_path: Path) -> None:
     """``postproc --version`` builds the parser only: no command's handler (``command_line.handler``), so none
-    of the translation's modules, the registry or the plugins."""
+    of the translation's modules, the registry or the plugins; and its number is a constant
+    (``postproc.version``), not the installed metadata (``importlib.metadata`` and the email package)."""
     modules = modules_after(tmp_path, "--version")
-    assert "postproc.commands.command_line" in modules  # the probe saw the run
+    assert "postproc.commands.command_line" in modules and "postproc.version" in modules  # the probe saw the run
     assert [name for name in ("postproc.commands.handlers", "postproc.commands.dialect_table", "postproc.api",
-                              "postproc.plugins", "postproc.lowering", "dialects") if loaded(modules, name)] == []
+                              "postproc.plugins", "postproc.lowering", "dialects", "importlib.metadata", "email")
+            if loaded(modules, name)] == []
+
+
+def test_the_version_printed_is_the_installed_distributions() -> None:
+    """The constant ``--version`` prints is the version the installation's metadata records (the build reads it
+    from ``postproc.version``: a stale installation, or a version written elsewhere, fails here)."""
+    from importlib.metadata import version
+    done = subprocess.run([sys.executable, "-m", "postproc", "--version"], capture_output=True, text=True,
+                          timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.startswith(f"postproc {version('postproc')}, hot path "), done.stdout
 
 
 def test_listing_the_dialects_runs_only_the_dialect_hook(tmp_path: Path) -> None:

@@ -78,16 +78,14 @@ OUTPUT = "write here instead of standard output ('-': standard output); written 
 
 
 def _version() -> str:
-    from importlib.metadata import PackageNotFoundError, version
-    try:
-        number = version("postproc")
-    except PackageNotFoundError:  # run from a checkout that is not installed
-        number = "unknown"
-    return f"postproc {number}, hot path {native.describe()}"
+    """The distribution's version (``postproc.version``: the constant the build reads, so the installed metadata
+    says the same) and which build of the hot path runs."""
+    from ..version import VERSION
+    return f"postproc {VERSION}, hot path {native.describe()}"
 
 
 class _Version(argparse.Action):
-    """``--version``, looked up only when asked (a run does not pay for importlib.metadata)."""
+    """``--version``, made only when asked."""
 
     def __call__(self, parser: argparse.ArgumentParser, namespace: argparse.Namespace, values: object,
                  option_string: str | None = None) -> None:

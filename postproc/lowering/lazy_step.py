@@ -21,15 +21,17 @@ if TYPE_CHECKING:
 class LazyStep(LoweringStep):
     """``LazyStep("postproc_grblhal.cancels:cancel_cycles_alone")``: the ``LoweringStep`` at ``module:name`` (an
     absolute module, as an entry point spells it; a plugin writes ``f"{__name__}.cancels:..."``), imported at
-    the first ``start`` and run as itself from then on."""
+    the first ``start`` and run as itself from then on. ``lathe_only``: the step does nothing on a mill (its own
+    ``start`` gives None there), so a mill's translation does not import it at all."""
 
-    __slots__ = ("target", "_step")
+    __slots__ = ("target", "lathe_only", "_step")
 
-    def __init__(self, target: str) -> None:
+    def __init__(self, target: str, lathe_only: bool = False) -> None:
         module, colon, name = target.partition(":")
         if not (module and colon and name) or module.startswith("."):
             raise ValueError(f"a lazy lowering step is 'package.module:name', not {target!r}")
         self.target = target
+        self.lathe_only = lathe_only
         self._step: LoweringStep | None = None
 
     def step(self) -> LoweringStep:
@@ -44,7 +46,9 @@ class LazyStep(LoweringStep):
         return step
 
     def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        if self.lathe_only and not ctx.lathe:
+            return None
         return self.step().start(ctx, target)
 
     def __repr__(self) -> str:
-        return f"LazyStep({self.target!r})"
+        return f"LazyStep({self.target!r}{', lathe_only=True' if self.lathe_only else ''})"

@@ -70,7 +70,7 @@ close_full_circles = LazyStep("postproc.rs274.lean_controller:close_full_circles
 
 cancel_cycles_alone = LazyStep(f"{__name__}.cancels:cancel_cycles_alone")
 resolve_cutter_compensation = LazyStep("postproc.lowering.cutter_compensation:resolve_cutter_compensation")
-thread_feed_apart = LazyStep("postproc.rs274.ngc_lathe_writer:feed_apart")
+thread_feed_apart = LazyStep("postproc.rs274.ngc_lathe_writer:feed_apart", lathe_only=True)
 subprograms_as_subs = LazyStep(f"{__name__}.subprograms:subprograms_as_subs")
 
 

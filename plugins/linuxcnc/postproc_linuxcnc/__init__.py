@@ -43,7 +43,7 @@ NATIVE = frozenset({
 })
 
 
-_thread_feed_apart = LazyStep(f"{__name__}.lathe_writer:feed_apart")
+_thread_feed_apart = LazyStep(f"{__name__}.lathe_writer:feed_apart", lathe_only=True)
 
 
 _subprogram_layout = LazyStep(f"{__name__}.layout:subprograms_after_callers")
