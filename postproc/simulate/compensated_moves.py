@@ -261,12 +261,13 @@ class CompensatedMoves(Position):
         shifts = self.lathe_shift
         length_at = self.length_index
         axes = self.axes
-        point: list[float | int] = []
-        crounded: list[float | int] = []
+        n = len(axes)
+        point: list[float | int] = [0] * n  # (filled by index: a store where an append was a call)
+        crounded: list[float | int] = [0] * n
         moved = apart = False
         f: float | int | None = None
         mode: str | None = None
-        for i in range(len(axes)):
+        for i in range(n):
             axis = axes[i]
             value = target[axis]
             r: Any
@@ -281,8 +282,8 @@ class CompensatedMoves(Position):
                 shift = shifts.get(axis)
                 if shift is not None:
                     c = num(value + shift + (offset if i == length_at else 0.0))
-            point.append(r)
-            crounded.append(c)
+            point[i] = r
+            crounded[i] = c
             if not moved:  # (identity first: an axis that stays keeps its number's object; never a nan)
                 b = before[i]
                 if c is not b and c != b:
