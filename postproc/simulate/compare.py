@@ -222,10 +222,10 @@ class PerMinute:
     def __next__(self) -> Event | MoveRecord:
         rest = self.rest
         if rest is not None:
-            converted = pull_item(rest)
-            if converted is None:
+            item = pull_item(rest)
+            if item is None:
                 raise StopIteration
-            return converted
+            return item
         head = self.head
         if head is None:
             head = _event(next(self.events))

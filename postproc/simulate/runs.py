@@ -11,7 +11,7 @@ read and written at each resume."""
 from __future__ import annotations
 
 import math
-from typing import Any, Final, Iterable, Iterator
+from typing import Any, Final, Iterable, Iterator, TypeVar
 
 from mypy_extensions import mypyc_attr
 
@@ -175,6 +175,8 @@ def beyond(a: float, b: float, c: float, n: int, rest: list[float] | None, limit
         return True
     if q < square * 0.999999 and q > 0.0:
         return False
+    if rest is None and a == 0.0 and b == 0.0 and c == 0.0:  # two points that agree exactly (a translation that
+        return 0.0 > limit                                   # writes the source's numbers): no call of hypot
     if rest is not None:
         return _hypot(a, b, c, *rest) > limit
     if n == 3:
@@ -409,7 +411,10 @@ def _one_helix(run: Move, m: Move, eps: float) -> bool:
 
 # -- the stream ------------------------------------------------------------------------------------
 
-def pull_item(events: Iterator[Any]) -> Any:
+_Item = TypeVar("_Item")
+
+
+def pull_item(events: Iterator[_Item]) -> _Item | None:
     """``next(events, None)`` (None: the stream ended), stepped natively: compiled, ``next`` is the builtin looked up
     by name and called through Python (~400 instructions an event), where a ``for`` loop's step calls the
     iterator's own slot (``postproc.lowering.lower.run_blocks`` says the same of its blocks). A stream never holds
