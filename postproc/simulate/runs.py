@@ -230,7 +230,7 @@ def _straight(kind: str, start_keys: Keys, start: list[float], keys: Keys, end: 
     m.length = length
     if length > 0:
         n = len(keys)
-        unit: list[float] = [0.0] * n
+        unit: list[float] = []  # (appended: compiled, ``[0.0] * n`` is a list repeated through Python, ~200 more)
         rest: list[float] = more if more is not None else NO_STEPS
         along = 0.0
         for i in range(n):
@@ -238,7 +238,7 @@ def _straight(kind: str, start_keys: Keys, start: list[float], keys: Keys, end: 
             # its division, product and sum three generic calls (~300 instructions an axis)
             step: float = d0 if i == 0 else d1 if i == 1 else d2 if i == 2 else rest[i - 3]
             uk = step / length
-            unit[i] = uk
+            unit.append(uk)
             along += step * uk
         m.unit_keys, m.unit = keys, unit
         m.along = along
