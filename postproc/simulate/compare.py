@@ -17,7 +17,7 @@ from .chords import pair_with_chords
 from .events import MOVES_THE_TOOL, Event
 from .move_record import MoveRecord
 from .normal_move import FEED_TOLERANCE as FEED_TOLERANCE, Move, same_feed as _same_feed  # (public names here too)
-from .runs import Normaliser, beyond, key_index, norm, normalise as normalise, point_value
+from .runs import Normaliser, beyond, key_index, norm, normalise as normalise, point_value, pull_item
 
 Point = tuple[float, float, float]
 
@@ -228,7 +228,10 @@ class PerMinute:
     def __next__(self) -> Event | MoveRecord:
         rest = self.rest
         if rest is not None:
-            return next(rest)
+            item = pull_item(rest)
+            if item is None:
+                raise StopIteration
+            return item
         head = self.head
         if head is None:
             head = _event(next(self.events))
@@ -237,8 +240,11 @@ class PerMinute:
                 return next(self.rest)
             self.head = head
             return head
-        ev = next(self.events)
-        if _feed_mode(ev) == "inverse_time":
+        ev = pull_item(self.events)  # (stepped natively: compiled, ``next`` is a builtin called through Python)
+        if ev is None:
+            raise StopIteration
+        mode = _feed_mode(ev)
+        if mode is not None and mode == "inverse_time":  # (most moves state none: no string comparison)
             last = self.last
             converted: Iterator[Event] = per_minute(_controlled(chain((head, ev), self.events)),
                                                     self.start if last is None else _resolved(last))

@@ -6,6 +6,7 @@ The offsets that move a controlled point and the moves themselves are its subcla
 
 from __future__ import annotations
 
+import math
 from typing import Callable, Final
 
 from mypy_extensions import mypyc_attr
@@ -30,6 +31,7 @@ from .work_offsets import declared_offsets, offset_beyond_frame
 LENGTH_AXIS: Final = _AXIS
 LINEAR_AXES: Final = _LINEAR
 # Final: compiled, a C constant, not a look-up in the module's dictionary (every move reads them)
+_NAN: Final = math.nan
 PATH_CONTROL: Final = "path control"
 """The setting a path control mode is recorded as (``postproc.simulate.events.UNSIMULATED``)."""
 _INITIAL_SETTINGS = {"cutter compensation": "off", "work offset": "1", LATHE_TOOL_OFFSET: "cancel"}
@@ -191,7 +193,7 @@ class Position:
         the machine's, unknown)."""
         self.sync: float | None = None
         """While a rigid tap moves (``rigid_tap``): its pitch in mm per revolution, the ``f`` of its moves."""
-        self.written_feed: float | None = None
+        self.written_feed: float = _NAN
         self.written_f: float | int = 0
         """The feed ``_feed_into`` last wrote and its ``num`` (the feed of a CAM program changes rarely)."""
 
@@ -392,7 +394,8 @@ class Position:
         feed = self.feed
         if feed is None:
             raise ProgramError(NO_FEED, self._at(), needs="F")
-        if feed != self.written_feed:  # always for nan: ``num`` refuses it at each move, as it did
+        if feed != self.written_feed:  # always for nan: ``num`` refuses it at each move, as it did (and before the
+            # first feed: ``written_feed`` starts as nan; a float, compiled one unboxed comparison, not a boxed one)
             self.written_f = num(feed)
             self.written_feed = feed
         if self.header_mode is None:

@@ -11,7 +11,7 @@ read and written at each resume."""
 from __future__ import annotations
 
 import math
-from typing import Any, Final, Iterable, Iterator
+from typing import Any, Final, Iterable, Iterator, TypeVar
 
 from mypy_extensions import mypyc_attr
 
@@ -175,6 +175,8 @@ def beyond(a: float, b: float, c: float, n: int, rest: list[float] | None, limit
         return True
     if q < square * 0.999999 and q > 0.0:
         return False
+    if rest is None and a == 0.0 and b == 0.0 and c == 0.0:  # two points that agree exactly (a translation that
+        return 0.0 > limit                                   # writes the source's numbers): no call of hypot
     if rest is not None:
         return _hypot(a, b, c, *rest) > limit
     if n == 3:
@@ -214,6 +216,10 @@ def _arc(ev: Event, start_keys: Keys, start: list[float]) -> Move:
     return m
 
 
+NO_STEPS: Final[list[float]] = []
+"""No steps after the third axis (``_straight``'s list where there are none; never changed)."""
+
+
 def _straight(kind: str, start_keys: Keys, start: list[float], keys: Keys, end: list[float], f: float | None,
               line: int, d0: float, d1: float, d2: float, more: list[float] | None, length: float) -> Move:
     """A straight move of ``length`` (the norm of its steps ``d0``, ``d1``, ``d2`` and ``more``, axis by axis in the
@@ -224,10 +230,13 @@ def _straight(kind: str, start_keys: Keys, start: list[float], keys: Keys, end: 
     m.length = length
     if length > 0:
         n = len(keys)
-        unit: list[float] = []
+        unit: list[float] = []  # (appended: compiled, ``[0.0] * n`` is a list repeated through Python, ~200 more)
+        rest: list[float] = more if more is not None else NO_STEPS
         along = 0.0
         for i in range(n):
-            step = d0 if i == 0 else d1 if i == 1 else d2 if i == 2 else more[i - 3]  # type: ignore[index]
+            # a float local, each step unboxed: compiled, the conditional of a list's item was an object and
+            # its division, product and sum three generic calls (~300 instructions an axis)
+            step: float = d0 if i == 0 else d1 if i == 1 else d2 if i == 2 else rest[i - 3]
             uk = step / length
             unit.append(uk)
             along += step * uk
@@ -329,15 +338,22 @@ def _extends(run: Move, keys: Keys, end: list[float], line: int, eps: float) -> 
     more: list[float] | None = None  # (the end from the run's start, the direction) of each axis after the third
     along = 0.0
     same = len(keys) == len(ukeys)  # the run's own axes (those of every move of a simulation)
+    shared = keys is skeys and keys is ukeys  # one tuple a simulation: each key at its own index, not looked for
     for i in range(len(keys)):
-        k = keys[i]
-        r = end[i] - point_value(skeys, s, k, i)
-        j = key_index(ukeys, k, i)
-        if j < 0:
-            uk = 0.0
-            same = False
+        r: float
+        uk: float
+        if shared:
+            r = end[i] - s[i]
+            uk = u[i]
         else:
-            uk = u[j]
+            k = keys[i]
+            r = end[i] - point_value(skeys, s, k, i)
+            j = key_index(ukeys, k, i)
+            if j < 0:
+                uk = 0.0
+                same = False
+            else:
+                uk = u[j]
         along += r * uk
         if n == 0:
             r0, u0 = r, uk
@@ -395,6 +411,19 @@ def _one_helix(run: Move, m: Move, eps: float) -> bool:
 
 # -- the stream ------------------------------------------------------------------------------------
 
+_Item = TypeVar("_Item")
+
+
+def pull_item(events: Iterator[_Item]) -> _Item | None:
+    """``next(events, None)`` (None: the stream ended), stepped natively: compiled, ``next`` is the builtin looked up
+    by name and called through Python (~400 instructions an event), where a ``for`` loop's step calls the
+    iterator's own slot (``postproc.lowering.lower.run_blocks`` says the same of its blocks). A stream never holds
+    None."""
+    for item in events:
+        return item
+    return None
+
+
 @mypyc_attr(allow_interpreted_subclasses=True)
 class Normaliser:
     """A toolpath's moves merged into runs, machine events as they are, pulled one at a time (``pull``; an
@@ -437,7 +466,7 @@ class Normaliser:
         events = self.events
         eps = self.eps
         while True:
-            item = next(events, None)
+            item = pull_item(events)
             if item is None:
                 run = self.run
                 self.run = None
@@ -485,8 +514,9 @@ class Normaliser:
             n = len(keys)
             d0 = d1 = d2 = 0.0
             more: list[float] | None = None  # the steps after the third axis
+            shared = keys is start_keys  # (one tuple a simulation: each key at its own index, not looked for)
             for i in range(n):
-                d = end[i] - point_value(start_keys, start, keys[i], i)
+                d = end[i] - (start[i] if shared else point_value(start_keys, start, keys[i], i))
                 if i == 0:
                     d0 = d
                 elif i == 1:
