@@ -8,11 +8,14 @@ does not import the syntax objects, cycles, frames and lowering steps (about a f
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Callable
+from typing import TYPE_CHECKING, Callable, Iterator
 
 from .hookspecs import hookimpl
 
 if TYPE_CHECKING:
+    from .context import Context
+    from .dialect import Dialect
+    from .ir import Block
     from .lowering.lower import Lowering
     from .xmlio import XFactory
 
@@ -51,7 +54,6 @@ def postproc_register_xml(factory: XFactory) -> None:
 def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
     from . import patterns
     from .lowering.feed_first import check_blocks
-    from .lowering.lathe_steps import expand_lathe_cycles, index_turret
     from .cycles.lowering import expand_canned_cycles
     from .cycles.rigid_tap_lowering import resolve_rigid_taps
     from .frames import evaluate_frames
@@ -86,3 +88,25 @@ def postproc_register_lowerings(register: Callable[[Lowering], None]) -> None:
     register(hold_stored_offsets)  # after the frames (they follow the setting where the source has it)
     register(drop_foreign_machine_functions)
     register(frame_program)  # last: the frame goes around what the steps before made
+
+
+# The lathe's generic lowering steps as the registry holds them: each imports its work when a lathe program is first
+# lowered. Both pass a mill's program untouched (``ctx.lathe`` False, the first thing each decides), so a mill's
+# run imports neither the lathe cycles' expansion (and the offsets and tool geometry it reads) nor the turret's
+# indexing. Here, above both the cycles and the RS274 family, which they load.
+
+
+def expand_lathe_cycles(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``postproc.cycles.lathe_lowering.expand_lathe_cycles``."""
+    if not ctx.lathe:
+        return blocks
+    from .cycles.lathe_lowering import expand_lathe_cycles as step
+    return step(blocks, ctx, target)
+
+
+def index_turret(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
+    """``postproc.rs274.lathe_tool_index.index_turret``."""
+    if not ctx.lathe:
+        return blocks
+    from .rs274.lathe_tool_index import index_turret as step
+    return step(blocks, ctx, target)

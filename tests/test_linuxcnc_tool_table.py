@@ -1,5 +1,5 @@
 """LinuxCNC tool tables (issue 26, deliver 1): ``<Tool pocket>``, a set-up's ``<Tools table="tool.tbl">`` read into
-its tools (``postproc.rs274.tool_table_file``), ``config check`` of the file and its pockets, ``config dump`` with
+its tools (``postproc.setup.tool_table_file``), ``config check`` of the file and its pockets, ``config dump`` with
 and without ``--flatten``, and the table written back, which rs274 reads (``-t``): its own report of each tool's
 number, length, diameter and pocket (``#5400``, ``#5403``, ``#5410``, ``#<_current_pocket>``) is the oracle."""
 
@@ -13,7 +13,7 @@ import pytest
 from hypothesis import given, strategies as st
 
 from postproc.errors import ConfigError, ErrorList
-from postproc.rs274.tool_table_file import parse_tool_table, tool_table_text
+from postproc.setup.tool_table_file import parse_tool_table, tool_table_text
 from postproc.setup.machine import ToolData
 from postproc.setup.machine_setup import load_setup
 from tests.support.rs274 import available, run_rs274

@@ -50,7 +50,7 @@ NOT_FOR_A_PLAIN_TRANSLATION = ("postproc.transforms.carry", "postproc.transforms
 """What a plain mill translation to LinuxCNC has no use for: the program transforms' work (``--transform``,
 ``--units``: ``postproc.transforms.apply``), a lathe's cycle reader and turning cycles (``LatheCycleSyntax`` is
 registered lazily), a lathe's lowering (its cycles' expansion and the turret's index:
-``postproc.lowering.lathe_steps``) and writing (LinuxCNC's thread feed step imports it for a lathe only),
+``postproc.core_plugin``) and writing (LinuxCNC's thread feed step imports it for a lathe only),
 the target's reading side (its block syntax and program step: the keep check and
 ``TARGET_OMITS_VACANT`` build the target's pipeline when a program that computes first asks, ``postproc.api``),
 and the lowering steps of other targets that registering their dialects named (Fanuc's ``number_jumps``, grbl's

@@ -25,7 +25,7 @@ import math
 from typing import Any, Iterable, TextIO
 
 from ..cycles.lowering import expand_canned_cycles
-from ..lowering.lathe_steps import expand_lathe_cycles
+from ..core_plugin import expand_lathe_cycles
 from ..dialect import Dialect
 from ..errors import Diagnostics, ErrorList, PostprocError, UsageError
 from ..geometry.arcs import CENTRE_KEYS, PLANE_INDEX, arc_sweep

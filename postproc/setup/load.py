@@ -138,7 +138,7 @@ class Merger:
         self.tool_table: str | None = None
         """The LinuxCNC tool table ``<Tools table>`` names, relative to the last file's folder."""
         self.table_tools: dict[str, Any] = {}
-        """Tool number -> the ``ToolData`` the table gives (``postproc.rs274.tool_table_file``)."""
+        """Tool number -> the ``ToolData`` the table gives (``postproc.setup.tool_table_file``)."""
         self.own = Own()
 
     def problem(self, message: str, el: etree._Element) -> None:
@@ -293,9 +293,9 @@ class Merger:
 
     def read_tool_table(self, el: etree._Element, last: bool) -> None:
         """``<Tools table="tool.tbl">``: the tools of a LinuxCNC tool table file (relative to this file's folder,
-        in the machine's units, ``postproc.rs274.tool_table_file``), each a whole entry, under the ``<Tool>``
+        in the machine's units, ``postproc.setup.tool_table_file``), each a whole entry, under the ``<Tool>``
         elements of the same ``<Tools>`` (they override it) and over the bases'."""
-        from ..rs274.tool_table_file import read_tool_table
+        from .tool_table_file import read_tool_table
         from .machine import entry_values
         name = el.get("table") or ""
         root = el.getroottree().getroot()

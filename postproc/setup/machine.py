@@ -121,7 +121,7 @@ class ToolData(Entry):
     """The tool changer's pocket holding the tool (a LinuxCNC tool table's ``P``) [K: LinuxCNC docs, "Tool
     Compensation", 2.1 "Tool Table Format": "The maximum pocket number is 1000"; 0 is the spindle of a random
     tool changer]. The program names a tool by its number (``T``), never by its pocket: the pocket is the
-    machine's, written into the tool table a LinuxCNC machine or rs274 reads (``postproc.rs274.tool_table_file``).
+    machine's, written into the tool table a LinuxCNC machine or rs274 reads (``postproc.setup.tool_table_file``).
     None: not given (a table written for LinuxCNC puts the tool in the pocket of its number)."""
     comment: str | None = setting(None, pattern=r"^[^\x00-\x1f]{1,250}$")
     """What the tool is, as a LinuxCNC tool table's remark after ``;`` says it (kept through an import, a

@@ -91,7 +91,7 @@ class MachineSetup(XmlNode):
         """Tool offset number -> its length or lathe offsets (``<Tools>``)."""
         self.tool_table: str | None = None
         """The LinuxCNC tool table file ``<Tools table>`` names, relative to the set-up file's folder: its tools are
-        in ``tools`` (``postproc.rs274.tool_table_file``)."""
+        in ``tools`` (``postproc.setup.tool_table_file``)."""
         self.table_tools: dict[str, ToolData] = {}
         """The tools as the table gives them, before the ``<Tool>`` elements override them (``config dump`` writes
         the table's name and only what the elements change)."""

@@ -23,7 +23,7 @@ import os
 import re
 from pathlib import Path
 
-from postproc.rs274.tool_table_file import tool_table_text
+from postproc.setup.tool_table_file import tool_table_text
 from postproc.setup.machine import ToolData
 
 from . import rs274
@@ -69,7 +69,7 @@ def linuxcnc_problems(text: str) -> list[str]:
             if re.search(r"(?i)(?<![A-Z])P\s*[-+]?\s*[#\[]", line):
                 tools |= set(range(1, 100))
     tools = sorted(tools)
-    # the set-up's tool table writer (postproc.rs274.tool_table_file) gives rs274 its table: each tool in the pocket
+    # the set-up's tool table writer (postproc.setup.tool_table_file) gives rs274 its table: each tool in the pocket
     # of its number, length and diameter 0 ("T1 P1 Z0 D0", the text the cache is keyed by)
     table = tool_table_text(ToolData(number=n, pocket=n, length=0.0, radius=0.0) for n in tools)
     text = _user_m_files(text)

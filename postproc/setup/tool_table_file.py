@@ -1,5 +1,6 @@
 """LinuxCNC's tool table file (``tool.tbl``): read into the set-up's ``<Tool>`` entries (``<Tools table="tool.tbl">``,
-``postproc.setup.load``) and written from them, for a LinuxCNC machine or for rs274 (``rs274 -t``).
+``postproc.setup.load``) and written from them, for a LinuxCNC machine or for rs274 (``rs274 -t``). A set-up data
+file like the XML, not a G-code spelling: the set-up's loader reads it, so it lives beside it, below every family.
 
 The format [K: LinuxCNC docs, "Tool Compensation", 2.1 "Tool Table Format": one tool a line, ``T# P# X Y Z A B C U V
 W Dia FA BA Ori Rem``, the remark after ``;``; the values in the machine's units, ``[TRAJ] LINEAR_UNITS``] as
@@ -26,7 +27,7 @@ from pathlib import Path
 from typing import Iterable
 
 from ..errors import ConfigError, ErrorList, Location
-from ..setup.machine import ToolData
+from .machine import ToolData
 
 __all__ = ["read_tool_table", "parse_tool_table", "tool_table_text"]
 
