@@ -68,7 +68,7 @@ def test_a_block_without_frames_translates_exactly(target: str, tmp_path: Path) 
     ("G1 F100\nG53 X0", "G53 (frame suppression) in G1"),
     ("G53 G1 X0 F100", "G53 (frame suppression) in G1"),
     ("G91 G53 Z-2", "G53 (frame suppression) in G91"),
-    ("G53 G0 A10", "G53 (frame suppression) with other axes than X, Y, Z"),
+    ("G53 G0 X1 I2", "G53 (frame suppression) with interpolation parameters I, J, K"),
     ("T2 D2 M6\nG53 G0 Z0", "G53 (frame suppression) with the length of D2 in force"),
     ("G53 G0 Z0 D1", "G53 (frame suppression) selecting tool data"),
     ("G1 G41 X10 F100\nG0\nG153 X0", "G153 (frame suppression) under radius compensation"),
@@ -209,14 +209,41 @@ def test_a_machine_move_under_g91_is_refused_towards_siemens() -> None:
         str(caught.value.errors[0])
 
 
-def test_fanuc_g53_of_a_rotary_axis_is_refused_for_siemens_at_its_line(tmp_path: Path) -> None:
-    """``G53 Y0. A0.`` (a Haas program's end, issue 26 audit26) was written ``SUPA G0 Y0. A0.``, which the SINUMERIK
-    reading keeps verbatim and cannot simulate (the test above: a block without frames with an axis other than
-    X, Y, Z): an output verify cannot read back. It is a located error instead, naming the axis."""
-    setup = load_setup_plain()
-    setup.machine.axes = "XYZA"
-    text = "G21 G90 G17 G0 X5. Y5. Z5.\nG53 Y0. A0.\nM30\n"
-    with pytest.raises(ErrorList, match=r"in\.nc:2:\d+: error: the siemens dialect cannot express a move in machine "
-                                        r"coordinates of axis A"):
-        translate(io.StringIO(text), io.StringIO(), file="in.nc", source="fanuc", target="siemens", setup=setup,
-                  diagnostics=Diagnostics(warn_stream=io.StringIO()))
+ROTARY = ('<MachineSetup name="t"><Machine axes="XYZA"/><Tools><Tool number="1" length="0.0" radius="0.0"/></Tools>'
+          '<WorkOffsets><Offset number="1" x="-100" y="-50" z="-200" a="30"/></WorkOffsets></MachineSetup>')
+"""G54 shifts Y by -50 and A by 30 degrees: a machine position is the work position plus those."""
+
+
+def _rotary(tmp_path: Path) -> MachineSetup:
+    path = tmp_path / "rotary.xml"
+    path.write_text(ROTARY)
+    return load_setup(path)
+
+
+@pytest.mark.parametrize("line", ["SUPA G0 Y0 A20", "G53 G0 Y0 A20", "G153 Y0 A20"])
+def test_a_block_without_frames_puts_a_rotary_axis_at_its_machine_position(line: str, tmp_path: Path) -> None:
+    """A frame carries offsets of the special axes too (issue 26, haasfacts; ``frame_suppression``): the block
+    goes to machine Y0 A20, which in G54 (Y -50, A +30) is work Y 0 + 50 = 50 and A 20 - 30 = -10 (worked out
+    by hand); the next block is in G54 again (A2 is work A 2)."""
+    text = "G710 G17 G90 G54 G0 X5 Y5 Z5 A0\nG0 A1\n" + line + "\nG0 A2\nM30\n"
+    moves = [(e["move"], float(e["y"]), float(e["a"]))
+             for e in toolpath_events(io.StringIO(text), file="in.mpf", dialect="siemens", setup=_rotary(tmp_path))
+             if "move" in e]
+    assert moves == [("rapid", 5, 0), ("rapid", 5, 1), ("rapid", 50, -10), ("rapid", 50, 2)]
+
+
+def test_fanuc_g53_of_a_rotary_axis_is_supa_and_reads_back(tmp_path: Path) -> None:
+    """``G53 Y0. A0.`` (a Haas program's end, issue 26 audit26) was refused for SINUMERIK (the reading kept a
+    SUPA block with A verbatim); SUPA suppresses the frames of every axis (``frame_suppression``): written
+    ``SUPA G0 Y0. A0.`` and verified point for point against the Fanuc source (machine A0 is work A -30)."""
+    setup = _rotary(tmp_path)
+    text = "G21 G90 G17 G54 G0 X5. Y5. Z5. A10.\nG53 Y0. A0.\nG0 A5.\nM30\n"
+    out = _from_fanuc(text, setup)
+    assert "SUPA G0 Y0. A0.\n" in out, out
+    report = verify_lines(io.StringIO(text), io.StringIO(out), file_in="a", file_out="b", source="fanuc",
+                          target="siemens", setup=setup, tolerance=0.0)
+    assert report.ok and report.max_deviation == 0, report.summary() + "\n" + out
+    moves = [(float(e["y"]), float(e["a"])) for e in toolpath_events(io.StringIO(out), file="out.mpf",
+                                                                         dialect="siemens", setup=setup)
+             if "move" in e]
+    assert moves == [(5, 10), (50, -30), (50, 5)], moves

@@ -18,7 +18,14 @@ exactly where the machine data cannot matter and the move is the neutral one (``
   Z is read that much higher, a number only); and no radius compensation (G40) in force, the block selecting
   neither;
 * G0 in force or in the block (the neutral machine-coordinate move is at rapid);
-* G90 (machine positions are absolute) and the geometry axes X, Y, Z only.
+* G90 (machine positions are absolute); the block's axes any of the channel's, geometry (X, Y, Z) or special
+  (A, B, C, U, V, W): a frame carries offsets of both ("The rough and fine offsets, scaling and mirroring can
+  be programmed for geometry and special axes" [V: SINUMERIK 840D sl Function Manual Basic Functions K2, 08/2005
+  6FC5397-0BP10-0BA0, 1.3 "Frames", "Features in relation to axes"]), and the settable zero offsets G54.. are
+  settable frames [V: same manual; SINUMERIK ISO Milling 04.07 3.1, "adjustable Frame G54 - G59"], so the
+  block without frames puts a rotary axis at its machine position as it does X, Y, Z (issue 26, haasfacts:
+  a Haas program's ``G53 Y0. A0.`` is ``SUPA G0 Y0. A0.``). ``I``, ``J``, ``K`` are no axes: a block of
+  them is kept.
 
 Anything else is kept verbatim, named (copied to SINUMERIK, refused elsewhere by name).
 """
@@ -76,8 +83,8 @@ def problem(block: Block, ctx: Context) -> str | None:
                 "rapid)")
     if "91" in codes or state.distance != "absolute" and "90" not in codes:
         return "in G91 (read in G90 only)"
-    if letters & set("ABCUVWIJK"):
-        return "with other axes than X, Y, Z"
+    if letters & set("IJK"):
+        return "with interpolation parameters I, J, K (no axes)"
     if "D" in letters or any(code in _CUTTER for code in codes):
         return "selecting tool data (read with no tool length and no radius compensation in force)"
     if state.extra.get(CUTTER_KEY):

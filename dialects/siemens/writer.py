@@ -515,10 +515,6 @@ class SiemensWriter(SemicolonCommentWriter):
         if (distance.mode if isinstance(distance, DistanceMode) else self.modal.distance) == "incremental":
             self.unsupported("a move in machine coordinates under G91 (read back in G90 only: machine positions "
                              "are absolute)", block)
-        others = sorted(a for a in motion.axes if a not in "XYZ")
-        if others:  # the reading keeps such a block verbatim, unsimulated (``frame_suppression.problem``)
-            self.unsupported(f"a move in machine coordinates of axis {', '.join(others)} (SUPA is read back with "
-                             "the geometry axes X, Y, Z only)", block)
         if self.radius_on or "CutterCompensation" in sections or "ToolLengthOffset" in sections \
                 or not self.no_length():
             self.unsupported("a move in machine coordinates with a tool length or radius compensation in force "
