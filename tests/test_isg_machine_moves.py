@@ -61,3 +61,20 @@ def test_machine_moves_and_reference_returns_keep_the_toolpath_to_isg_and_back(p
     _verify(program, out, "fanuc", "isg")
     back = _translate(out, "isg", "fanuc")
     _verify(program, back, "fanuc", "fanuc")
+
+
+LENGTH_OFF = "G21 G90\nG00 X10. Y5. Z30.\nG43 H2 Z30.\nG91 G00 Z10.\nG53 G49 Z0.\nG00 X1.\nM30\n"
+"""A Haas program's end under G91 (issue 26, haasfacts: cadekiely_o78239_3x3_face_smile.nc lines 56-57): the length
+cancelled beside a move in machine coordinates."""
+
+
+def test_a_length_cancelled_beside_a_machine_move_under_g91_is_applied_by_that_move() -> None:
+    """The move in machine coordinates is to a position (the IR's; written after ``G90``), so the length change
+    beside it is applied there, as under G90: it was refused as left for a later absolute Z move. Hand-derived:
+    D0 (ISG selects no length), the machine move to machine Z0 after G90, G91 again for the incremental X1.;
+    the toolpath checked against the Fanuc source's simulation."""
+    out = _translate(LENGTH_OFF, "fanuc", "isg")
+    lines = out.splitlines()
+    assert lines[4:7] == ["D0", "G90 G00", "#SUPPRESS OFFSETS Z0."], out
+    assert lines[-2:] == ["G91 G00 X1.", "M30"], out
+    _verify(LENGTH_OFF, out, "fanuc", "isg")

@@ -206,7 +206,7 @@ class _Select(BlockStep):
             state.pending = False
             distance = sections.get("DistanceMode")
             absolute = distance.mode == "absolute" if isinstance(distance, DistanceMode) else state.absolute
-            if later_z and not absolute:
+            if later_z and not absolute and "MachineCoordinates" not in sections:
                 ctx.diagnostics.error(UnsupportedError(
                     "the tool length changed before is applied by this incremental Z move on the target (when "
                     "the axis moves [?]), on the source's controller only at the next absolute Z: program Z "
@@ -321,5 +321,8 @@ def _z_move(block: Block) -> bool:
 
 
 def _moves_z(block: Block, absolute: bool) -> bool:
+    """The block moves Z to a position: under ``absolute``, or in machine coordinates, which are positions under
+    G91 too (the IR's ``MachineCoordinates``; the target writes such a move after ``G90``:
+    ``postproc.isg_family.machine_moves``)."""
     motion = block.sections.get("Motion")
-    return isinstance(motion, Motion) and "Z" in motion.axes and absolute
+    return isinstance(motion, Motion) and "Z" in motion.axes and (absolute or "MachineCoordinates" in block.sections)
