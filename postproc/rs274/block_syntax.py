@@ -359,7 +359,11 @@ class WordBlockSyntax(Syntax):
             return
         if "MachineCoordinates" in block.sections and axes:
             # G53 positions at rapid whatever the modal motion; a motion code beside it still sets the mode
-            # (ModalStateSyntax leaves the mode alone for machine-coordinate blocks).
+            # (ModalStateSyntax leaves the mode alone for machine-coordinate blocks). Its axis words are read as
+            # machine positions under G91 too [?: no Fanuc or Haas text found (issue 26, haasfacts); the family
+            # differs where documented: 9/Series ignores G53 and its axis words, Mitsubishi M700V moves by the
+            # increments, Yaskawa iCube goes to the machine position, SINUMERIK's ISO mode and ISG take G53 in
+            # G90 only; tests/heldout/corpus.toml, cadekiely_o78239_3x3_face_smile.nc, has the sources].
             if motion_mode is not None:
                 state.motion = motion_mode
             block.add(Motion("rapid", {k: real(v) for k, v in axes.items()}))
