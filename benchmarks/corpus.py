@@ -265,7 +265,7 @@ def run_pair(program: Program, target: str) -> Outcome:
     except PostprocError as err:
         return _errors_outcome(program, target, [err])
     written = out.getvalue()
-    problems = output_problems(target, written)
+    problems = output_problems(target, written, setup)
     if problems:
         return Outcome(program.path, target, FAILURE, "invalid output", "\n".join(problems[:5]))
     try:
@@ -282,11 +282,16 @@ def run_pair(program: Program, target: str) -> Outcome:
     return Outcome(program.path, target, OK, category, "\n".join([f"{report.moves} moves", *report.ignored]))
 
 
-def output_problems(target: str, text: str) -> list[str]:
-    """What the target's own controller would refuse in ``text`` (grbl's parser rules; rs274)."""
+def output_problems(target: str, text: str, setup: MachineSetup | None = None) -> list[str]:
+    """What the target's own controller would refuse in ``text`` (grbl's and grblHAL's parser rules, grblHAL's
+    for the build and mode ``setup`` describes, as the suite checks them: ``tests.support.output_rules``; rs274)."""
     if target == "grbl":
         from tests.support.grbl_rules import grbl_problems
         return grbl_problems(text)
+    if target == "grblhal":
+        from postproc.setup.machine_setup import MachineSetup as Setup
+        from tests.support.output_rules import problems
+        return problems(target, text, setup if setup is not None else Setup())
     if target == "linuxcnc":
         from tests.support.linuxcnc_rules import available, linuxcnc_problems
         return linuxcnc_problems(text) if available() else []

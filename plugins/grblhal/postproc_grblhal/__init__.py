@@ -102,7 +102,11 @@ class Grblhal(GrblFamily):
     SPINDLE_ORIENTATION = False
     """No M19: cycles that need an oriented stop follow the set-up's ``Cycles orientation``."""
     TOOL_CHANGER = True
-    """M6 is accepted by every build (``$341``: a manual change, or ignored; an ATC runs it)."""
+    """M6 is accepted by every build (``$341``: a manual change, or ignored; an ATC runs it). Whether the spindle
+    keeps turning through it depends on ``$341``: the core stops it only in ``tool_change.c``'s ``tool_change``,
+    installed for modes 1-3; under 4 ("Ignore M6") the T word selects the tool at once [V: ``gcode.c``,
+    ``tool_change.c`` ``tc_init``]: a lathe set-up says ``<Controller toolChangeWithSpindleOn="true"/>`` for such a
+    build (``tests/test_grblhal_tool_change.py``)."""
     STOPS_BEFORE_MOTION = True
     """The RS274/NGC order of execution: M5 and M9 act before the block's motion (grbl's ``gcode.c``)."""
     FEED_BEFORE_UNITS = False
