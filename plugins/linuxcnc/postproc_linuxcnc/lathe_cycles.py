@@ -14,11 +14,14 @@ and R (the retract) are radial [V: rs274 2.9.0~pre1, a G7 program with X and U d
 
 Refused where read, rs274's own refusals (``ProgramError``): no Q ("G7x.x requires a Q word"), a plane other
 than ZX, I not above 0, G71/G72 under cutter compensation, a profile arc given by neither I/K nor R or by
-both, a profile not monotonic. A profile's computed words are evaluated when the cycle runs, with the
-parameters' values then, as LinuxCNC does (``_evaluated``; a read of the current position reads the profile's own
-point). Not modelled, so refused (``UnsupportedError``): a profile word computed from a local parameter (or a
-computed G code), a control statement (o-word loop, branch, call) or parameter assignment in a profile (read past
-before issue 26: a loop's moves were taken once), a profile with any word but those (a feed or speed is ignored there: said rather than dropped), a subprogram not
+both, a profile not monotonic. Where the program runs (``RUN_INTERPRETER_KEY``), the profile is run as LinuxCNC
+runs it, as a call from the cycle through its o-word loops, branches, calls and parameter assignments, its words
+evaluated with the parameters' values then (``_run_profile``; a read of the current position reads the profile's own
+point). In a program kept as written (not run), its words alone are read, computed ones from global parameters
+(``_evaluated``). Not modelled, so refused (``UnsupportedError``): in a program kept as written, a profile word
+computed from a local parameter (or a computed G code) and a control statement or parameter assignment in a
+profile (read past before issue 26: a loop's moves were taken once); a profile with any word but those (a feed or
+speed is ignored there: said rather than dropped), a subprogram not
 defined before the cycle, the cycle in incremental mode (G91), a P of G70 that is no whole number from 1,
 G70 under cutter compensation (``read_g7x``), and a roughing profile not closed back to the cycle's X (G71) or
 Z (G72): LinuxCNC 2.9.0~pre1 closes it after the offset, later versions before it (``postproc.rs274.ngc_g7x``,
@@ -27,14 +30,14 @@ Z (G72): LinuxCNC 2.9.0~pre1 closes it after the offset, later versions before i
 
 from __future__ import annotations
 
-from typing import Any, Callable, Final
+from typing import Any, Callable, Final, Generator, Iterator
 
 from postproc.context import Context
 from postproc.interp.control import ASSIGN, SubEnd, SubStart
 from postproc.cycles.turning.profile import TurnMove
 from postproc.errors import Location, PostprocError, ProgramError, UnsupportedError
 from postproc.ir.expr import Binary, Expr, Func, Num, Unary, Var
-from postproc.interp.variables import RUN_VARIABLES_KEY
+from postproc.interp.variables import RUN_INTERPRETER_KEY, RUN_VARIABLES_KEY
 from postproc.ir import Block, Motion, NativeCode
 from postproc.rs274.arc_ends import RS274NGC_ARC_END
 from postproc.rs274.codes import g_key
@@ -224,7 +227,15 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     if written is None:
         raise unmodelled(f"{name} Q{label}: no subprogram o{label} is defined before the cycle", "Q")
     start = complex(float(z), float(x))
-    pieces = _profile(written, start, ctx, name, ctx.at(block, ctx.column_of(block, "Q")), scale)
+    at = ctx.at(block, ctx.column_of(block, "Q"))
+    point = {"X": start.imag, "Z": start.real}
+    running = ctx.run_data.get(RUN_INTERPRETER_KEY)
+    run = None if running is None else _run_profile(running, label, block, ctx, name, at, point)
+    try:
+        pieces = _profile(iter(written) if run is None else run, start, ctx, name, at, scale, point)
+    finally:  # a refusal stops the run inside the profile: it leaves the call and the readings now
+        if run is not None:
+            run.close()
     if code != "70" and len(pieces) > 1:
         _check_closed(pieces, start, code, name, unmodelled)
     try:
@@ -261,6 +272,89 @@ def _check_closed(pieces: list[Piece], start: complex, code: str, name: str, unm
                          "cycle's Z")
 
 
+def _run_profile(running: Any, label: str, block: Block, ctx: Context, name: str, at: Location,
+                 point: dict[str, float]) -> Generator[Written, None, None]:
+    """The profile's blocks as the controller reads them when the cycle runs: the subprogram run as a call from
+    the cycle by the program's own interpreter (``Interpreter.call_apart``), through its o-word loops, branches,
+    calls and parameter assignments, each block's words evaluated with the parameters as they then stand [V:
+    ``interp_g7x.cc`` ``convert_g7x``: ``read("O<q> CALL")``, then ``convert_control_functions`` and the block's
+    parameter settings at each block read, until the call level is back to the cycle's; rs274 2.9.0~pre1 run
+    here cuts ``nc_files/lathe_g7x_face_boring.ngc``'s ``REPEAT [3]`` three times, tests/test_ngc_g7x.py]. A read
+    of the current position (``#<_x>``, ``#5420``..) reads the profile's own point (``point``, which ``_profile``
+    moves on before the next block is read: ``_evaluated``). A fillet or chamfer block, whose words travel
+    inert (``ProfileCollector``), gives its words as written, evaluated here. An error of the run is located at
+    the cycle's Q and names the profile's line."""
+    from postproc.interp.evaluation import evaluate_number  # (the interpreter's modules: a profile's cost only)
+
+    corners = {line: (words, values) for body in ctx.run_data.get(PROFILES_KEY, {}).values()
+               for line, words, values in body if words and words[0][0] != STATEMENT}
+    variables = running.vars
+    errors: list[PostprocError] = []
+    with _profile_readings(ctx, variables, point):
+        for concrete in running.call_apart(label, block, errors.append):
+            origin = getattr(concrete, "origin", None)
+            if not _corner_block(concrete):
+                yield concrete.line, list(concrete.words), {}
+                continue
+            found = corners.get(concrete.line)
+            if found is None or origin is not None and origin.file != ctx.file:
+                raise UnsupportedError(f"{name}'s profile, line {concrete.line}: a fillet or chamfer block of another "
+                                       "file's subprogram is not modelled", at)
+            words, values = found
+            out: list[tuple[str, str]] = []
+            for letter, text in words:
+                value = values.get(letter.upper())
+                if isinstance(value, Expr):
+                    try:
+                        text = repr(evaluate_number(value, variables, f"{letter}{text}"))
+                    except PostprocError as err:
+                        raise ProgramError(f"{name}'s profile, line {concrete.line}: {err.message}", at) from None
+                out.append((letter, text))
+            yield concrete.line, out, {}
+    if errors:
+        where = errors[0].location
+        line = f", line {where.line}" if where is not None else ""
+        raise ProgramError(f"{name}'s profile{line}: {errors[0].message}", at)
+
+
+class _profile_readings:
+    """While a profile is read: the current position (``#<_x>``, ``#<_z>``, #5420, #5422) reads the profile's
+    own ``point`` (in program units, X a radius), the other axes and offsets as the machine stands
+    (``FrameReadings``); ``_evaluated`` gives the source."""
+
+    def __init__(self, ctx: Context, variables: Any, point: dict[str, float]) -> None:
+        self.ctx, self.variables, self.point = ctx, variables, point
+        self.saved: Any = None
+
+    def __enter__(self) -> None:
+        # imported here: the interpreter's modules import decimal, which a plain translation to LinuxCNC must not
+        # pay for at start-up (tests/test_startup_imports.py); only a cycle's profile comes here
+        from postproc.frames.parameters import FrameReadings
+        from postproc.rs274.variables import NgcVariables
+
+        point = self.point
+
+        class ProfileReadings(FrameReadings):
+            """The frame as the profile's words read it: the profile's point on X and Z, the rest as it stands."""
+
+            __slots__ = ()
+
+            def position(self, axis: str) -> float | None:
+                return point[axis] if axis in point else super().position(axis)
+
+            def state(self) -> Any:  # a loop that moves the profile's point on is not repeating itself
+                return (super().state(), point["X"], point["Z"])
+
+        if isinstance(self.variables, NgcVariables):
+            self.saved = self.variables.frames
+            self.variables.frames = ProfileReadings(self.ctx)
+
+    def __exit__(self, *exc: object) -> None:
+        from postproc.rs274.variables import NgcVariables
+        if isinstance(self.variables, NgcVariables):
+            self.variables.frames = self.saved
+
+
 def _evaluated(words: list[tuple[str, str]], values: dict[str, Any], ctx: Context,
                unmodelled: Callable[[str], UnsupportedError], point: dict[str, float]) -> list[tuple[str, str]]:
     """A profile block's words with its computed ones evaluated where the cycle runs: LinuxCNC reads the
@@ -276,21 +370,8 @@ def _evaluated(words: list[tuple[str, str]], values: dict[str, Any], ctx: Contex
     at X25 Z1; under G7 with the cycle's X60 ``X[#<_x>-10]`` ends at the radius 10 (``#<_x>`` reads the radius
     30); LinuxCNC's ``nc_files/lathe_g7x_face_boring.ngc`` steps its profile by ``#<_x>``, tests/test_ngc_g7x.py].
     The other axes read as the machine stands (``FrameReadings``)."""
-    # imported here: the interpreter's modules import decimal, which a plain translation to LinuxCNC must not
-    # pay for at start-up (tests/test_startup_imports.py); only a cycle's profile comes here
-    from postproc.interp.evaluation import evaluate_number
+    from postproc.interp.evaluation import evaluate_number  # (the interpreter's modules: ``_profile_readings``)
     from postproc.interp.run_state import is_number
-
-    from postproc.frames.parameters import FrameReadings
-    from postproc.rs274.variables import NgcVariables
-
-    class ProfileReadings(FrameReadings):
-        """The frame as the profile's words read it: the profile's point on X and Z, the rest as it stands."""
-
-        __slots__ = ()
-
-        def position(self, axis: str) -> float | None:
-            return point[axis] if axis in point else super().position(axis)
 
     variables = ctx.run_data.get(RUN_VARIABLES_KEY)
     out: list[tuple[str, str]] = []
@@ -302,16 +383,11 @@ def _evaluated(words: list[tuple[str, str]], values: dict[str, Any], ctx: Contex
         if variables is None or letter.upper() == "G" or not _global(value):
             raise unmodelled(f"{letter}{text}: a computed word in a G70-G72 profile reading a local parameter or "
                              "giving the G code is not supported (write the numbers, or use global parameters)")
-        frames = variables.frames if isinstance(variables, NgcVariables) else None
-        if isinstance(variables, NgcVariables):
-            variables.frames = ProfileReadings(ctx)
         try:
-            number = evaluate_number(value, variables, f"{letter}{text}")
+            with _profile_readings(ctx, variables, point):
+                number = evaluate_number(value, variables, f"{letter}{text}")
         except PostprocError as err:
             raise unmodelled(f"{letter}{text}: {err.message}") from None
-        finally:
-            if isinstance(variables, NgcVariables):
-                variables.frames = frames
         out.append((letter, repr(number)))
     return out
 
@@ -333,10 +409,12 @@ def _global(expr: Expr) -> bool:
     return False
 
 
-def _profile(written: list[Written], start: complex, ctx: Context, name: str, at: Location,
-             scale: float) -> list[Piece]:
-    """The cycle's pieces: the approach from ``start``, then the subprogram's moves (module docstring); a
-    refusal is located at the cycle's Q and names the profile's line."""
+def _profile(written: Iterator[Written], start: complex, ctx: Context, name: str, at: Location,
+             scale: float, point: dict[str, float]) -> list[Piece]:
+    """The cycle's pieces: the approach from ``start``, then the subprogram's moves (module docstring), read
+    one block at a time: ``point`` is moved on to each move's end before the next block is read (where a
+    read of the current position reads it: ``_evaluated``, ``_run_profile``); a refusal is located at the
+    cycle's Q and names the profile's line."""
     pieces: list[Piece] = []
     mode: str | None = None
     absolute_centres = arc_centres.STATE_KEY in ctx.state.extra
@@ -349,10 +427,11 @@ def _profile(written: list[Written], start: complex, ctx: Context, name: str, at
             return UnsupportedError(f"{name}'s profile, line {line}: {message}", at)
 
         if words and words[0][0] == STATEMENT:
-            raise unmodelled(f"'{words[0][1]}': a control statement or parameter assignment in a profile is not "
-                             "modelled (the controller runs it as it reads the profile: write the moves it makes)")
+            raise unmodelled(f"'{words[0][1]}': a control statement or parameter assignment in a profile of a "
+                             "program kept as written is not modelled (the controller runs it as it reads the "
+                             "profile, and the program is not run here: write the moves it makes)")
         if values:
-            words = _evaluated(words, values, ctx, unmodelled, {"X": here.imag, "Z": here.real})
+            words = _evaluated(words, values, ctx, unmodelled, point)
         got: dict[str, float] = {}
         for letter, num in words:
             up = letter.upper()
@@ -410,4 +489,5 @@ def _profile(written: list[Written], start: complex, ctx: Context, name: str, at
         if "C" in got:
             pieces.append(Chamfer(got["C"], end))
         here = end
+        point["X"], point["Z"] = here.imag, here.real
     return pieces
