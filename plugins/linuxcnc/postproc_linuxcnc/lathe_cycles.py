@@ -42,7 +42,8 @@ from postproc.ir import Block, Motion, NativeCode
 from postproc.rs274.arc_ends import RS274NGC_ARC_END
 from postproc.rs274.codes import g_key
 from postproc.rs274.lathe_threading import place_thread_moves, thread_refusal
-from postproc.rs274.ngc_g7x import NgcCycleError, arc_centre_by_radius, cycle_moves
+from postproc.rs274.ngc_g7x import (FIRST, MASTER, V2_9_1, V2_9_4, NgcCycleError, arc_centre_by_radius, closes,
+                                   cycle_moves, rules_of)
 from postproc.rs274.ngc_g7x_segments import Arc, Chamfer, Fillet, Line, Piece
 
 from . import arc_centres
@@ -164,6 +165,15 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
         """A form the controller may run but this reading does not model."""
         return UnsupportedError(message, ctx.at(block, ctx.column_of(block, letter or "G")))
 
+    release = ctx.setup.controller.release()
+    version_rules = None if release is None else rules_of(release)
+    if release is not None and release < FIRST:
+        raise refuse(f"{name}: LinuxCNC {ctx.setup.controller.version} (the set-up's <Controller version>) has no "
+                     "G70-G72 (they came with 2.9.0)")
+    if release is not None and version_rules is None:
+        raise unmodelled(f"{name} of LinuxCNC {ctx.setup.controller.version} (the set-up's <Controller version>) is "
+                         "not modelled: its algorithm is read from 2.9.0 to 2.10.0~pre1 (interp_g7x.cc)")
+
     del block.sections["Motion"]
     state = ctx.state
     state.motion = None  # (the profile's last code stays in force there: a block of axis words alone is refused)
@@ -236,11 +246,12 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     finally:  # a refusal stops the run inside the profile: it leaves the call and the readings now
         if run is not None:
             run.close()
-    if code != "70" and len(pieces) > 1:
-        _check_closed(pieces, start, code, name, unmodelled)
+    rules = MASTER if release is None else version_rules
+    if code != "70" and release is None:
+        _check_closed(pieces, float(x), float(z), code, name, unmodelled)
     try:
         moves = cycle_moves(code, pieces, float(x), float(z), d=words.get("D", 0.0), e=words.get("E", 0.0),
-                            i=words.get("I", 1.0), r=words.get("R", 0.5), passes=int(passes),
+                            i=words.get("I", 1.0), r=words.get("R", 0.5), passes=int(passes), rules=rules,
                             inch=state.units == "inch")
     except NgcCycleError as err:
         raise refuse(f"{name}: {err} (rs274: \"G7X error\")") from None
@@ -255,21 +266,20 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     state.position["Z"] = last.z
 
 
-def _check_closed(pieces: list[Piece], start: complex, code: str, name: str, unmodelled: Any) -> None:
-    """A roughing profile must end back at the cycle's X (G71) or Z (G72) (module docstring)."""
+def _check_closed(pieces: list[Piece], x: float, z: float, code: str, name: str, unmodelled: Any) -> None:
+    """Without a version in the set-up, a roughing profile is read only where no LinuxCNC version closes it back
+    to the cycle's X (G71) or Z (G72): 2.9.0 never does, 2.9.1-2.9.3 whenever it ends elsewhere, 2.9.4 on when it
+    ends short (``postproc.rs274.ngc_g7x.closes``), so the cut would depend on the version."""
+    facing = code.startswith("72")
+    if len(pieces) <= 1 or not any(closes(rules, facing, pieces, x, z) for rules in (V2_9_1, V2_9_4)):
+        return
     end = pieces[-1].end
-    back = pieces[-1].end - pieces[-1].start
-    front = pieces[0].end - pieces[0].start
-    if code.startswith("71") and abs(back.real) > 0 and front.imag * (start.imag - end.imag) < 0:
-        raise unmodelled(f"{name}: the profile ends at X{end.imag:g}, short of the cycle's X{start.imag:g}: LinuxCNC "
-                         "versions cut it differently (interp_g7x.cc adds a move to the cycle's X from 2.9.1, commit "
-                         "03793cc9fa, under another condition from 2.9.4, commit c38c192fdd); end the profile at the "
-                         "cycle's X")
-    if code.startswith("72") and abs(back.imag) > 0 and front.real * (start.real - end.real) < 0:
-        raise unmodelled(f"{name}: the profile ends at Z{end.real:g}, short of the cycle's Z{start.real:g}: LinuxCNC "
-                         "versions cut it differently (interp_g7x.cc adds a move to the cycle's Z from 2.9.1, commit "
-                         "03793cc9fa, under another condition from 2.9.4, commit c38c192fdd); end the profile at the "
-                         "cycle's Z")
+    axis, at, cycle = ("Z", end.real, z) if facing else ("X", end.imag, x)
+    raise unmodelled(f"{name}: the profile ends at {axis}{at:g}, not at the cycle's {axis}{cycle:g}: LinuxCNC versions "
+                     f"cut it differently (interp_g7x.cc: 2.9.0 leaves it open, 2.9.1 adds a move to the cycle's "
+                     f"{axis}, commit 03793cc9fa, 2.9.4 only when the profile ends short of it, commit c38c192fdd); "
+                     "name the version in the set-up (<Controller version=\"2.9.0\"/>) or end the profile at the "
+                     f"cycle's {axis}")
 
 
 def _run_profile(running: Any, label: str, block: Block, ctx: Context, name: str, at: Location,
