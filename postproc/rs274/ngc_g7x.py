@@ -21,7 +21,7 @@ two cycles cut different paths, so neither is written as the other.
 * G70: P passes, pass n at (n - 1)(D - E)/P + E from the profile (``offset``), each a rapid to the cycle's
   point, a rapid to the offset profile's first point, then the offset profile.
 
-Versions (``G7xRules``, ``rules_of``): the algorithm changed between LinuxCNC releases in three steps that move the
+Versions (``CycleRules``, ``rules_of``): the algorithm changed between LinuxCNC releases in three steps that move the
 tool [V: ``interp_g7x.cc`` at the tags v2.9.0-pre1 .. v2.9.10 and master 5c41560e of github:LinuxCNC/linuxcnc]. A
 roughing profile that ends short of the cycle's X (turning) or Z (facing) is not closed up to 2.9.0 (the offset
 profile is then cut as it ends); from 2.9.1 (03793cc9fa) a line back to the cycle's X/Z is added before the
@@ -71,7 +71,7 @@ def _frame(state: int, p: complex) -> complex:
     return -1j * p
 
 
-class G7xRules:
+class CycleRules:
     """The steps of the algorithm that changed between LinuxCNC versions (module docstring)."""
 
     __slots__ = ("name", "closing", "walk_on_at_end", "walk_stops_at_last")
@@ -88,18 +88,18 @@ class G7xRules:
         """The pocket walk stops at the profile's last piece (48a3ee4a, master)."""
 
 
-V2_9_0: Final = G7xRules("2.9.0", None, False, False)
+V2_9_0: Final = CycleRules("2.9.0", None, False, False)
 """2.9.0 (and 2.9.0~pre1, the rs274 installed here: the same ``interp_g7x.cc``) [V]."""
-V2_9_1: Final = G7xRules("2.9.1-2.9.3", "always", False, False)
-V2_9_4: Final = G7xRules("2.9.4-2.9.8", "outward", False, False)
-V2_9_9: Final = G7xRules("2.9.9-2.9.10", "outward", True, False)
-MASTER: Final = G7xRules("2.10.0~pre1 (master 5c41560e)", "outward", True, True)
+V2_9_1: Final = CycleRules("2.9.1-2.9.3", "always", False, False)
+V2_9_4: Final = CycleRules("2.9.4-2.9.8", "outward", False, False)
+V2_9_9: Final = CycleRules("2.9.9-2.9.10", "outward", True, False)
+MASTER: Final = CycleRules("2.10.0~pre1 (master 5c41560e)", "outward", True, True)
 """The stored master [V: its ``VERSION`` file says 2.10.0~pre1]: the default of the engine."""
 FIRST: Final = (2, 9, 0)
 """The first version with G70-G72 [V: ``interp_g7x.cc`` is in no v2.8 tag; v2.9.0-pre1 has it]."""
 
 
-def rules_of(version: tuple[int, ...]) -> G7xRules | None:
+def rules_of(version: tuple[int, ...]) -> CycleRules | None:
     """The rules of LinuxCNC ``version`` (major, minor, patch); None before 2.9.0 (no G70-G72) or after 2.10.0,
     whose algorithm is not in the stored source."""
     if version < FIRST or version > (2, 10, 0):
@@ -115,7 +115,7 @@ class Profile:
 
     __slots__ = ("pieces", "flip", "step", "escape", "pocket_starts", "moves", "here", "rules", "inch")
 
-    def __init__(self, pieces: list[Piece], rules: G7xRules = MASTER, inch: bool = False) -> None:
+    def __init__(self, pieces: list[Piece], rules: CycleRules = MASTER, inch: bool = False) -> None:
         self.pieces = pieces
         self.inch = inch
         """Program units are inches (the arc check's tolerance)."""
@@ -363,7 +363,7 @@ class Profile:
 
 
 def cycle_moves(code: str, pieces: list[Piece], x: float, z: float, d: float = 0.0, e: float = 0.0,
-                i: float = 1.0, r: float = 0.5, passes: int = 1, rules: G7xRules = MASTER,
+                i: float = 1.0, r: float = 0.5, passes: int = 1, rules: CycleRules = MASTER,
                 inch: bool = False) -> list[Move]:
     """The moves of ``code`` ("70", "71", "71.1", "71.2", "72", "72.1", "72.2") over ``pieces``, the
     approach from the cycle's point (X ``x``, Z ``z``) first, after the rapid to that point; the words'
@@ -384,7 +384,7 @@ def cycle_moves(code: str, pieces: list[Piece], x: float, z: float, d: float = 0
     return Profile(pieces, rules, inch).roughing(int(sub or "0"), x, z, d, i, r, facing)
 
 
-def closes(rules: G7xRules, facing: bool, pieces: list[Piece], x: float, z: float) -> bool:
+def closes(rules: CycleRules, facing: bool, pieces: list[Piece], x: float, z: float) -> bool:
     """The version adds a line from the roughing profile's end back to the cycle's X (G71) or Z (G72) [V:
     ``convert_g7x``: 2.9.1 ``if(x!=imag(start))``; 2.9.4 ``if(std::abs(real(dback))>0 &&
     imag(dfront)*(x-imag(start))<0)``, Z for G72 with the axes swapped]."""
@@ -414,5 +414,5 @@ def arc_centre_by_radius(start: complex, end: complex, radius: float, ccw: bool)
     return centre + d if ccw else centre - d
 
 
-__all__ = ["FIRST", "MASTER", "V2_9_0", "V2_9_1", "V2_9_4", "V2_9_9", "G7xRules", "NgcCycleError", "Output",
+__all__ = ["FIRST", "MASTER", "V2_9_0", "V2_9_1", "V2_9_4", "V2_9_9", "CycleRules", "NgcCycleError", "Output",
            "arc_centre_by_radius", "closes", "cycle_moves", "rules_of"]

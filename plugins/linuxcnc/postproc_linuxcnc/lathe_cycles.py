@@ -23,9 +23,11 @@ computed from a local parameter (or a computed G code) and a control statement o
 profile (read past before issue 26: a loop's moves were taken once); a profile with any word but those (a feed or
 speed is ignored there: said rather than dropped), a subprogram not
 defined before the cycle, the cycle in incremental mode (G91), a P of G70 that is no whole number from 1,
-G70 under cutter compensation (``read_g7x``), and a roughing profile not closed back to the cycle's X (G71) or
-Z (G72): LinuxCNC 2.9.0~pre1 closes it after the offset, later versions before it (``postproc.rs274.ngc_g7x``,
-``legacy``), so its cut depends on the version.
+G70 under cutter compensation (``read_g7x``, any version), and, where the set-up names no LinuxCNC version
+(``<Controller version>``), a roughing profile that some version closes back to the cycle's X (G71) or Z (G72):
+2.9.0 leaves it open, 2.9.1-2.9.3 and 2.9.4 on close it under different conditions (``postproc.rs274.ngc_g7x``,
+``CycleRules``), so its cut depends on the version (``_check_closed``). With a version, its rules cut it; a version
+before 2.9.0 has no G70-G72 (refused), one after 2.10.0 is not modelled.
 """
 
 from __future__ import annotations
@@ -194,18 +196,18 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
                          "compensation enabled\"): cancel it (G40) before the cycle")
         # Three behaviours by version [V: interp_g7x.cc at the tags v2.9.0, v2.9.2, v2.9.3, v2.9.4 of
         # github:LinuxCNC/linuxcnc]: up to 2.9.2 the cycle's rapids and passes are all compensated, from where the
-        # profile ends [V: rs274 2.9.0~pre1 run here]; 2.9.3 (b1f3e7d8, "Fix unintended move when using G42 for
+        # profile ends (reading the profile moved the interpreter's current point there, not the compensation's)
+        # [V: rs274 2.9.0~pre1 run here: not the cut of the cycle's moves written out under G41/G42, with or
+        # without a move to the profile's end first]; 2.9.3 (b1f3e7d8, "Fix unintended move when using G42 for
         # G70") puts the current point back at the cycle's start before the passes; 2.9.4 (f648d01c and
         # 0b80d453da) also turns compensation off for the rapid to the cycle's X Z and for each pass's first
-        # rapid. No interpreter after 2.9.0~pre1 is at hand to check the compensated path against, and a set-up
-        # does not name the LinuxCNC version: refused.
-        raise unmodelled(f"{name} with cutter compensation on is not modelled: LinuxCNC up to 2.9.2 compensates the "
-                     "cycle from where its profile ends (a move to the profile's end first) [V: rs274 2.9.0~pre1 "
-                     "run here], 2.9.3 starts its passes from the cycle's start point (interp_g7x.cc, commit "
-                     "b1f3e7d8), 2.9.4 and later also turn compensation off for the approach to the start point "
-                     "and each pass's first rapid (commits f648d01c, 0b80d453da), and those versions are not at "
-                     "hand to check; cancel compensation (G40) before the cycle, or write its profile under "
-                     "G41/G42 as moves")
+        # rapid. None of the three is modelled, whatever <Controller version> says: refused.
+        raise unmodelled(f"{name} with cutter compensation on is not modelled (any LinuxCNC version): up to 2.9.2 "
+                         "the cycle is compensated from where its profile ends [V: rs274 2.9.0~pre1 run here], 2.9.3 "
+                         "starts its passes from the cycle's start point (interp_g7x.cc, commit b1f3e7d8), 2.9.4 and "
+                         "later also turn compensation off for the approach to the start point and each pass's first "
+                         "rapid (commits f648d01c, 0b80d453da); cancel compensation (G40) before the cycle, or write "
+                         "its profile under G41/G42 as moves")
     if state.plane != "ZX":
         raise refuse(f"{name} runs in the ZX plane only (rs274: \"can only be used in XZ plane (G18)\")")
     incremental = state.distance == "incremental"
@@ -246,7 +248,7 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     finally:  # a refusal stops the run inside the profile: it leaves the call and the readings now
         if run is not None:
             run.close()
-    rules = MASTER if release is None else version_rules
+    rules = MASTER if version_rules is None else version_rules  # (no version: a profile any version closes is refused)
     if code != "70" and release is None:
         _check_closed(pieces, float(x), float(z), code, name, unmodelled)
     try:
