@@ -36,7 +36,7 @@ from .evaluation import var_key
 from ..ir import Block, Comments
 from ..ir.source_map import CallSite, ExecutedBlock, Origin
 from .frame import Frame
-from .host import Interrupt
+from .host import Interrupt, Reporter
 from .store import Program, source_text
 from .structure import flow_overflow
 from .run_state import RunState, is_number
@@ -57,6 +57,32 @@ class Interpreter(RunState):
             yield from self._loop()
         except Interrupt:
             return
+
+    def call_apart(self, name: str, block: Block, report: Reporter) -> Iterator[Block]:
+        """Run subprogram ``name`` as a call made by ``block`` where this run stands (suspended at a block it
+        yielded), in a run of its own: the same store and variables, the call a new level, the bounds fresh,
+        no annotation and no modal call; its errors go to ``report`` and end it. The blocks it yields are the
+        call's concrete blocks. LinuxCNC runs a G70-G72 cycle's profile so: its interpreter reads
+        ``O<q> CALL``, then block after block through the o-word control flow and the parameter assignments
+        until the call level is back to the cycle's, taking each block's moves into the profile [V: LinuxCNC
+        ``src/emc/rs274ngc/interp_g7x.cc`` ``convert_g7x``, 2.9.0 to master]."""
+        nested = Interpreter(self.store, self.host, self.vars, self.limits, report, rules=self.rules,
+                             counts=self.counts)
+        caller = self.frames[-1] if self.frames else Frame(self.store.main, 0, 0, None, False, None, 1, 1, {},
+                                                           False, None)
+        base = Frame(caller.program, caller.pc, caller.pc, caller.origin, False, None, 1, 1, {}, False, None)
+        nested.frames = [base]  # runs nothing of its own: the run ends when the call returns to it
+        try:
+            try:
+                yield from nested._enter(base, block, name, {}, 1, True, modal=False)
+            except PostprocError as err:
+                nested._fail(err, base, block, 1)
+            yield from nested._loop()
+        except Interrupt:
+            return
+        finally:  # stopped inside the call (an error, or the reader of its blocks done): its levels are left
+            while len(nested.frames) > 1:
+                self.vars.leave(nested.frames.pop().new_level, None)
 
     def _loop(self) -> Iterator[Block]:
         frames = self.frames

@@ -20,6 +20,12 @@ RUN_VARIABLES_KEY = "interp.variables"
 interpreter's blocks stream through the steps one by one). A step that runs words kept as written (LinuxCNC's
 G70-G72 reading their profile subprogram when the cycle runs) evaluates them there."""
 
+RUN_INTERPRETER_KEY = "interp.interpreter"
+"""``ctx.run_data`` key: the running program's interpreter (``postproc.interp.machine.Interpreter``), suspended at the
+block a later step reads: a step that runs a subprogram as the controller does at that block (LinuxCNC's G70-G72
+running their profile) runs it there (``Interpreter.call_apart``). Absent: no program runs (it is kept as written,
+or it computes nothing)."""
+
 SystemRanges = tuple[tuple[int, int, str], ...]
 """A family's system variables by range ``(first, last, what a message calls them)``; the first match wins."""
 

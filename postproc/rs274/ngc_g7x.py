@@ -21,13 +21,17 @@ two cycles cut different paths, so neither is written as the other.
 * G70: P passes, pass n at (n - 1)(D - E)/P + E from the profile (``offset``), each a rapid to the cycle's
   point, a rapid to the offset profile's first point, then the offset profile.
 
-``legacy``: the rs274 installed here is LinuxCNC 2.9.0~pre1 (Debian 12's linuxcnc-uspace, git f1270d6ed7 of
-2023-02-08), which lacks two later fixes [V: the file's history, commits bb75d9cc/c38c192f (issue 2939),
-48a3ee4a and 111fd213]: a roughing profile that ends short of the cycle's X (turning) or Z (facing) is closed
-back to it after the offset, not before; and the pocket walk neither stops at the profile's last piece nor
-moves on from a piece whose end it stands at. The current version is the default; the oracle's is kept to
-check the rest by it (over 400 random profiles the pocket walk fix changed no move; the closing changes
-the cut of every profile not closed, which the LinuxCNC reading therefore refuses).
+Versions (``CycleRules``, ``rules_of``): the algorithm changed between LinuxCNC releases in three steps that move the
+tool [V: ``interp_g7x.cc`` at the tags v2.9.0-pre1 .. v2.9.10 and master 5c41560e of github:LinuxCNC/linuxcnc]. A
+roughing profile that ends short of the cycle's X (turning) or Z (facing) is not closed up to 2.9.0 (the offset
+profile is then cut as it ends); from 2.9.1 (03793cc9fa) a line back to the cycle's X/Z is added before the
+offset whenever the profile does not end there; from 2.9.4 (bb75d9cc, c38c192f, issue 2939) only when the
+profile's last piece runs along Z (X for facing) and it ends on the side of the cycle's X/Z away from where it
+starts. The pocket walk moves on from a piece whose end it stands at from 2.9.9 (111fd213) and stops at the
+profile's last piece on master (48a3ee4a, not in a 2.9 release). The rs274 installed here is LinuxCNC 2.9.0~pre1
+(Debian 12's linuxcnc-uspace, git f1270d6ed7 of 2023-02-08; its ``interp_g7x.cc`` is v2.9.0's, byte for byte):
+the oracle checks 2.9.0's rules by it, the later ones from the source alone (over 400 random profiles the pocket
+walk fixes changed no move; the closing changes the cut of every profile not closed).
 """
 
 from __future__ import annotations
@@ -67,17 +71,56 @@ def _frame(state: int, p: complex) -> complex:
     return -1j * p
 
 
+class CycleRules:
+    """The steps of the algorithm that changed between LinuxCNC versions (module docstring)."""
+
+    __slots__ = ("name", "closing", "walk_on_at_end", "walk_stops_at_last")
+
+    def __init__(self, name: str, closing: str | None, walk_on_at_end: bool, walk_stops_at_last: bool) -> None:
+        self.name = name
+        """The versions, as a message names them."""
+        self.closing = closing
+        """A roughing profile short of the cycle's X/Z: None not closed, "always" closed when it does not end
+        there (2.9.1-2.9.3), "outward" closed when its last piece runs along the cut and it ends short (2.9.4 on)."""
+        self.walk_on_at_end = walk_on_at_end
+        """The pocket walk moves on from a piece whose end it stands at (111fd213, 2.9.9 on)."""
+        self.walk_stops_at_last = walk_stops_at_last
+        """The pocket walk stops at the profile's last piece (48a3ee4a, master)."""
+
+
+V2_9_0: Final = CycleRules("2.9.0", None, False, False)
+"""2.9.0 (and 2.9.0~pre1, the rs274 installed here: the same ``interp_g7x.cc``) [V]."""
+V2_9_1: Final = CycleRules("2.9.1-2.9.3", "always", False, False)
+V2_9_4: Final = CycleRules("2.9.4-2.9.8", "outward", False, False)
+V2_9_9: Final = CycleRules("2.9.9-2.9.10", "outward", True, False)
+MASTER: Final = CycleRules("2.10.0~pre1 (master 5c41560e)", "outward", True, True)
+"""The stored master [V: its ``VERSION`` file says 2.10.0~pre1]: the default of the engine."""
+FIRST: Final = (2, 9, 0)
+"""The first version with G70-G72 [V: ``interp_g7x.cc`` is in no v2.8 tag; v2.9.0-pre1 has it]."""
+
+
+def rules_of(version: tuple[int, ...]) -> CycleRules | None:
+    """The rules of LinuxCNC ``version`` (major, minor, patch); None before 2.9.0 (no G70-G72) or after 2.10.0,
+    whose algorithm is not in the stored source."""
+    if version < FIRST or version > (2, 10, 0):
+        return None
+    if version == (2, 10, 0):
+        return MASTER
+    patch = version[2] if len(version) > 2 else 0
+    return V2_9_0 if patch == 0 else V2_9_1 if patch <= 3 else V2_9_4 if patch <= 8 else V2_9_9
+
+
 class Profile:
     """The cycle's profile: its pieces, the first being the approach from the cycle's point."""
 
-    __slots__ = ("pieces", "flip", "step", "escape", "pocket_starts", "moves", "here", "legacy", "inch")
+    __slots__ = ("pieces", "flip", "step", "escape", "pocket_starts", "moves", "here", "rules", "inch")
 
-    def __init__(self, pieces: list[Piece], legacy: bool = False, inch: bool = False) -> None:
+    def __init__(self, pieces: list[Piece], rules: CycleRules = MASTER, inch: bool = False) -> None:
         self.pieces = pieces
         self.inch = inch
         """Program units are inches (the arc check's tolerance)."""
-        self.legacy = legacy
-        """The pocket walk of LinuxCNC 2.9.0~pre1 (module docstring)."""
+        self.rules = rules
+        """The version's pocket walk (module docstring)."""
         self.flip = 0
         """Bits: 1 mirrored in Z, 2 mirrored in X, 4 turned a quarter."""
         self.step = 0.5
@@ -88,7 +131,7 @@ class Profile:
         """Where the tool is, in the program's frame: an arc ending there is no move."""
 
     def copy(self) -> "Profile":
-        twin = Profile([p.copy() for p in self.pieces], self.legacy, self.inch)
+        twin = Profile([p.copy() for p in self.pieces], self.rules, self.inch)
         twin.flip = self.flip
         twin.step = self.step
         twin.escape = self.escape
@@ -286,9 +329,9 @@ class Profile:
                         return
                     index += 1
                 return
-            if not self.legacy and index == len(pieces) - 1:
+            if self.rules.walk_stops_at_last and index == len(pieces) - 1:
                 return
-            if abs(at[0].imag - x) > TOLERANCE or not self.legacy and piece.end == at[0]:
+            if abs(at[0].imag - x) > TOLERANCE or self.rules.walk_on_at_end and piece.end == at[0]:
                 index += 1
                 continue
             for j in range(index, len(pieces)):
@@ -320,28 +363,41 @@ class Profile:
 
 
 def cycle_moves(code: str, pieces: list[Piece], x: float, z: float, d: float = 0.0, e: float = 0.0,
-                i: float = 1.0, r: float = 0.5, passes: int = 1, legacy: bool = False,
+                i: float = 1.0, r: float = 0.5, passes: int = 1, rules: CycleRules = MASTER,
                 inch: bool = False) -> list[Move]:
     """The moves of ``code`` ("70", "71", "71.1", "71.2", "72", "72.1", "72.2") over ``pieces``, the
     approach from the cycle's point (X ``x``, Z ``z``) first, after the rapid to that point; the words'
     defaults are the controller's [V: ``convert_g7x``: D 0, E 0, I 1, R 0.5, P 1]. A profile of its
-    approach alone makes no move. ``legacy``: as LinuxCNC 2.9.0~pre1 (module docstring)."""
+    approach alone makes no move. ``rules``: the LinuxCNC version's (module docstring)."""
     if len(pieces) <= 1:
         return []
     if i <= 0:
         raise NgcCycleError("I must be greater than zero.")
     start = pieces[-1].end
-    front = pieces[0].end - pieces[0].start
-    back = pieces[-1].end - pieces[-1].start
     cycle, _, sub = code.partition(".")
     if cycle == "70":
-        return Profile(pieces, legacy, inch).finishing(x, z, d, e, passes)
+        return Profile(pieces, rules, inch).finishing(x, z, d, e, passes)
     facing = cycle == "72"
-    if not legacy and not facing and abs(back.real) > 0 and front.imag * (x - start.imag) < 0:
-        pieces.append(Line(start, complex(start.real, x)))  # back out to the cycle's X
-    if not legacy and facing and abs(back.imag) > 0 and front.real * (z - start.real) < 0:
-        pieces.append(Line(start, complex(z, start.imag)))  # back out to the cycle's Z
-    return Profile(pieces, legacy, inch).roughing(int(sub or "0"), x, z, d, i, r, facing)
+    if closes(rules, facing, pieces, x, z):
+        # back out to the cycle's X (Z): a line added before the offset [V: convert_g7x, 2.9.1 on]
+        pieces.append(Line(start, complex(z, start.imag) if facing else complex(start.real, x)))
+    return Profile(pieces, rules, inch).roughing(int(sub or "0"), x, z, d, i, r, facing)
+
+
+def closes(rules: CycleRules, facing: bool, pieces: list[Piece], x: float, z: float) -> bool:
+    """The version adds a line from the roughing profile's end back to the cycle's X (G71) or Z (G72) [V:
+    ``convert_g7x``: 2.9.1 ``if(x!=imag(start))``; 2.9.4 ``if(std::abs(real(dback))>0 &&
+    imag(dfront)*(x-imag(start))<0)``, Z for G72 with the axes swapped]."""
+    if rules.closing is None or len(pieces) <= 1:
+        return False
+    start = pieces[-1].end
+    if rules.closing == "always":
+        return z != start.real if facing else x != start.imag
+    front = pieces[0].end - pieces[0].start
+    back = pieces[-1].end - pieces[-1].start
+    if facing:
+        return abs(back.imag) > 0 and front.real * (z - start.real) < 0
+    return abs(back.real) > 0 and front.imag * (x - start.imag) < 0
 
 
 
@@ -358,4 +414,5 @@ def arc_centre_by_radius(start: complex, end: complex, radius: float, ccw: bool)
     return centre + d if ccw else centre - d
 
 
-__all__ = ["NgcCycleError", "Output", "arc_centre_by_radius", "cycle_moves"]
+__all__ = ["FIRST", "MASTER", "V2_9_0", "V2_9_1", "V2_9_4", "V2_9_9", "CycleRules", "NgcCycleError", "Output",
+           "arc_centre_by_radius", "closes", "cycle_moves", "rules_of"]

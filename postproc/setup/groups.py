@@ -304,10 +304,21 @@ class ControllerSettings(SetupGroup):
     taken (its default is not documented)."""
     arc_radius_share: float | None = setting(None, ge=0)
     """Fagor 8070: the same as a share of the radius, CIRINFACT (as a fraction, not %). None: none taken."""
+    version: str | None = setting(None, pattern=r"^[0-9]{1,3}\.[0-9]{1,3}(\.[0-9]{1,3})?$")
+    """The controller software's release, ``major.minor[.patch]`` (``2.9.0``), where a behaviour the dialect models
+    changed between releases: LinuxCNC's G70-G72 (``postproc.rs274.ngc_g7x``: a roughing profile short of the
+    cycle's X/Z, the pocket walk). None: not given, and such a program is refused where the releases differ."""
     rotation_incremental: bool = False
     """A coordinate rotation's angle R follows G90/G91: under G91 it is added to the angle of the program's
     previous rotation (Fanuc parameter 5400#0 RIN = 1 [V: 0i-A connection manual B-63503EN, 5400];
     Haas setting 73 "G68 incremental R" [K: Haas mill operator's manual, G68]). False: R is absolute."""
+
+    def release(self) -> tuple[int, ...] | None:
+        """``version`` as numbers (``(2, 9, 0)``), a missing patch 0; None where not given."""
+        if self.version is None:
+            return None
+        numbers = tuple(int(part) for part in self.version.split("."))
+        return numbers if len(numbers) == 3 else numbers + (0,)
 
     def dwell_seconds_rule(self) -> bool:
         return self.variant == "haas" if self.dwell_seconds is None else self.dwell_seconds

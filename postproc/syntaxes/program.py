@@ -30,7 +30,7 @@ from .syntax import Syntax
 from .kept_lines import Kept, KeptLines
 from ..interp.spelling import spell_integer, spell_number
 from ..interp.rules import STORED_PROGRAMS, SubprogramRules
-from ..interp.variables import RUN_VARIABLES_KEY, Variables, VariablesFactory
+from ..interp.variables import RUN_INTERPRETER_KEY, RUN_VARIABLES_KEY, Variables, VariablesFactory
 
 if TYPE_CHECKING:
     from ..interp.host import Reporter
@@ -338,15 +338,20 @@ class ProgramSyntax(Syntax):
         interpreter = Interpreter(store, self, variables, ctx.setup.limits, report or ctx.diagnostics.error,
                                   annotate=True, rules=self.SUBPROGRAM_RULES, counts=ctx)
         interpreter.called = arguments is not None
+        ctx.run_data[RUN_INTERPRETER_KEY] = interpreter  # a later step runs a subprogram there (a lathe cycle's profile)
         interpreter.vacant_word = vacant_word
         if flattening:  # the run's output is written: a statement the switch may skip cannot be baked in
             interpreter.skip_refused = ("the program is flattened, which writes what the statement did, so the "
                                         "block delete switch could no longer skip it")
         closing = _closing_mark(body)
         last_was_mark = False
-        for block in interpreter.run(start=len(prefix)):
-            last_was_mark = "TapeMark" in block.sections
-            yield block
+        try:
+            for block in interpreter.run(start=len(prefix)):
+                last_was_mark = "TapeMark" in block.sections
+                yield block
+        finally:  # a run ended (or given up) no longer stands anywhere a later step could run a subprogram
+            if ctx.run_data.get(RUN_INTERPRETER_KEY) is interpreter:
+                del ctx.run_data[RUN_INTERPRETER_KEY]
         if closing is not None and not last_was_mark:
             yield closing  # the run ended at M30/M2: the tape closes as the source's did
 

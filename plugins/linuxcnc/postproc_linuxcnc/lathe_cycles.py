@@ -14,32 +14,38 @@ and R (the retract) are radial [V: rs274 2.9.0~pre1, a G7 program with X and U d
 
 Refused where read, rs274's own refusals (``ProgramError``): no Q ("G7x.x requires a Q word"), a plane other
 than ZX, I not above 0, G71/G72 under cutter compensation, a profile arc given by neither I/K nor R or by
-both, a profile not monotonic. A profile's computed words are evaluated when the cycle runs, with the
-parameters' values then, as LinuxCNC does (``_evaluated``; a read of the current position reads the profile's own
-point). Not modelled, so refused (``UnsupportedError``): a profile word computed from a local parameter (or a
-computed G code), a control statement (o-word loop, branch, call) or parameter assignment in a profile (read past
-before issue 26: a loop's moves were taken once), a profile with any word but those (a feed or speed is ignored there: said rather than dropped), a subprogram not
+both, a profile not monotonic. Where the program runs (``RUN_INTERPRETER_KEY``), the profile is run as LinuxCNC
+runs it, as a call from the cycle through its o-word loops, branches, calls and parameter assignments, its words
+evaluated with the parameters' values then (``_run_profile``; a read of the current position reads the profile's own
+point). In a program kept as written (not run), its words alone are read, computed ones from global parameters
+(``_evaluated``). Not modelled, so refused (``UnsupportedError``): in a program kept as written, a profile word
+computed from a local parameter (or a computed G code) and a control statement or parameter assignment in a
+profile (read past before issue 26: a loop's moves were taken once); a profile with any word but those (a feed or
+speed is ignored there: said rather than dropped), a subprogram not
 defined before the cycle, the cycle in incremental mode (G91), a P of G70 that is no whole number from 1,
-G70 under cutter compensation (``read_g7x``), and a roughing profile not closed back to the cycle's X (G71) or
-Z (G72): LinuxCNC 2.9.0~pre1 closes it after the offset, later versions before it (``postproc.rs274.ngc_g7x``,
-``legacy``), so its cut depends on the version.
+G70 under cutter compensation (``read_g7x``, any version), and, where the set-up names no LinuxCNC version
+(``<Controller version>``), a roughing profile that some version closes back to the cycle's X (G71) or Z (G72):
+2.9.0 leaves it open, 2.9.1-2.9.3 and 2.9.4 on close it under different conditions (``postproc.rs274.ngc_g7x``,
+``CycleRules``), so its cut depends on the version (``_check_closed``). With a version, its rules cut it; a version
+before 2.9.0 has no G70-G72 (refused), one after 2.10.0 is not modelled.
 """
 
 from __future__ import annotations
 
-from typing import Any, Callable, Final
+from typing import Any, Callable, Final, Generator, Iterator
 
 from postproc.context import Context
 from postproc.interp.control import ASSIGN, SubEnd, SubStart
 from postproc.cycles.turning.profile import TurnMove
 from postproc.errors import Location, PostprocError, ProgramError, UnsupportedError
 from postproc.ir.expr import Binary, Expr, Func, Num, Unary, Var
-from postproc.interp.variables import RUN_VARIABLES_KEY
+from postproc.interp.variables import RUN_INTERPRETER_KEY, RUN_VARIABLES_KEY
 from postproc.ir import Block, Motion, NativeCode
 from postproc.rs274.arc_ends import RS274NGC_ARC_END
 from postproc.rs274.codes import g_key
 from postproc.rs274.lathe_threading import place_thread_moves, thread_refusal
-from postproc.rs274.ngc_g7x import NgcCycleError, arc_centre_by_radius, cycle_moves
+from postproc.rs274.ngc_g7x import (FIRST, MASTER, V2_9_1, V2_9_4, NgcCycleError, arc_centre_by_radius, closes,
+                                   cycle_moves, rules_of)
 from postproc.rs274.ngc_g7x_segments import Arc, Chamfer, Fillet, Line, Piece
 
 from . import arc_centres
@@ -161,6 +167,15 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
         """A form the controller may run but this reading does not model."""
         return UnsupportedError(message, ctx.at(block, ctx.column_of(block, letter or "G")))
 
+    release = ctx.setup.controller.release()
+    version_rules = None if release is None else rules_of(release)
+    if release is not None and release < FIRST:
+        raise refuse(f"{name}: LinuxCNC {ctx.setup.controller.version} (the set-up's <Controller version>) has no "
+                     "G70-G72 (they came with 2.9.0)")
+    if release is not None and version_rules is None:
+        raise unmodelled(f"{name} of LinuxCNC {ctx.setup.controller.version} (the set-up's <Controller version>) is "
+                         "not modelled: its algorithm is read from 2.9.0 to 2.10.0~pre1 (interp_g7x.cc)")
+
     del block.sections["Motion"]
     state = ctx.state
     state.motion = None  # (the profile's last code stays in force there: a block of axis words alone is refused)
@@ -181,18 +196,18 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
                          "compensation enabled\"): cancel it (G40) before the cycle")
         # Three behaviours by version [V: interp_g7x.cc at the tags v2.9.0, v2.9.2, v2.9.3, v2.9.4 of
         # github:LinuxCNC/linuxcnc]: up to 2.9.2 the cycle's rapids and passes are all compensated, from where the
-        # profile ends [V: rs274 2.9.0~pre1 run here]; 2.9.3 (b1f3e7d8, "Fix unintended move when using G42 for
+        # profile ends (reading the profile moved the interpreter's current point there, not the compensation's)
+        # [V: rs274 2.9.0~pre1 run here: not the cut of the cycle's moves written out under G41/G42, with or
+        # without a move to the profile's end first]; 2.9.3 (b1f3e7d8, "Fix unintended move when using G42 for
         # G70") puts the current point back at the cycle's start before the passes; 2.9.4 (f648d01c and
         # 0b80d453da) also turns compensation off for the rapid to the cycle's X Z and for each pass's first
-        # rapid. No interpreter after 2.9.0~pre1 is at hand to check the compensated path against, and a set-up
-        # does not name the LinuxCNC version: refused.
-        raise unmodelled(f"{name} with cutter compensation on is not modelled: LinuxCNC up to 2.9.2 compensates the "
-                     "cycle from where its profile ends (a move to the profile's end first) [V: rs274 2.9.0~pre1 "
-                     "run here], 2.9.3 starts its passes from the cycle's start point (interp_g7x.cc, commit "
-                     "b1f3e7d8), 2.9.4 and later also turn compensation off for the approach to the start point "
-                     "and each pass's first rapid (commits f648d01c, 0b80d453da), and those versions are not at "
-                     "hand to check; cancel compensation (G40) before the cycle, or write its profile under "
-                     "G41/G42 as moves")
+        # rapid. None of the three is modelled, whatever <Controller version> says: refused.
+        raise unmodelled(f"{name} with cutter compensation on is not modelled (any LinuxCNC version): up to 2.9.2 "
+                         "the cycle is compensated from where its profile ends [V: rs274 2.9.0~pre1 run here], 2.9.3 "
+                         "starts its passes from the cycle's start point (interp_g7x.cc, commit b1f3e7d8), 2.9.4 and "
+                         "later also turn compensation off for the approach to the start point and each pass's first "
+                         "rapid (commits f648d01c, 0b80d453da); cancel compensation (G40) before the cycle, or write "
+                         "its profile under G41/G42 as moves")
     if state.plane != "ZX":
         raise refuse(f"{name} runs in the ZX plane only (rs274: \"can only be used in XZ plane (G18)\")")
     incremental = state.distance == "incremental"
@@ -224,12 +239,21 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     if written is None:
         raise unmodelled(f"{name} Q{label}: no subprogram o{label} is defined before the cycle", "Q")
     start = complex(float(z), float(x))
-    pieces = _profile(written, start, ctx, name, ctx.at(block, ctx.column_of(block, "Q")), scale)
-    if code != "70" and len(pieces) > 1:
-        _check_closed(pieces, start, code, name, unmodelled)
+    at = ctx.at(block, ctx.column_of(block, "Q"))
+    point = {"X": start.imag, "Z": start.real}
+    running = ctx.run_data.get(RUN_INTERPRETER_KEY)
+    run = None if running is None else _run_profile(running, label, block, ctx, name, at, point)
+    try:
+        pieces = _profile(iter(written) if run is None else run, start, ctx, name, at, scale, point)
+    finally:  # a refusal stops the run inside the profile: it leaves the call and the readings now
+        if run is not None:
+            run.close()
+    rules = MASTER if version_rules is None else version_rules  # (no version: a profile any version closes is refused)
+    if code != "70" and release is None:
+        _check_closed(pieces, float(x), float(z), code, name, unmodelled)
     try:
         moves = cycle_moves(code, pieces, float(x), float(z), d=words.get("D", 0.0), e=words.get("E", 0.0),
-                            i=words.get("I", 1.0), r=words.get("R", 0.5), passes=int(passes),
+                            i=words.get("I", 1.0), r=words.get("R", 0.5), passes=int(passes), rules=rules,
                             inch=state.units == "inch")
     except NgcCycleError as err:
         raise refuse(f"{name}: {err} (rs274: \"G7X error\")") from None
@@ -244,21 +268,103 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     state.position["Z"] = last.z
 
 
-def _check_closed(pieces: list[Piece], start: complex, code: str, name: str, unmodelled: Any) -> None:
-    """A roughing profile must end back at the cycle's X (G71) or Z (G72) (module docstring)."""
+def _check_closed(pieces: list[Piece], x: float, z: float, code: str, name: str, unmodelled: Any) -> None:
+    """Without a version in the set-up, a roughing profile is read only where no LinuxCNC version closes it back
+    to the cycle's X (G71) or Z (G72): 2.9.0 never does, 2.9.1-2.9.3 whenever it ends elsewhere, 2.9.4 on when it
+    ends short (``postproc.rs274.ngc_g7x.closes``), so the cut would depend on the version."""
+    facing = code.startswith("72")
+    if len(pieces) <= 1 or not any(closes(rules, facing, pieces, x, z) for rules in (V2_9_1, V2_9_4)):
+        return
     end = pieces[-1].end
-    back = pieces[-1].end - pieces[-1].start
-    front = pieces[0].end - pieces[0].start
-    if code.startswith("71") and abs(back.real) > 0 and front.imag * (start.imag - end.imag) < 0:
-        raise unmodelled(f"{name}: the profile ends at X{end.imag:g}, short of the cycle's X{start.imag:g}: LinuxCNC "
-                         "versions cut it differently (interp_g7x.cc adds a move to the cycle's X from 2.9.1, commit "
-                         "03793cc9fa, under another condition from 2.9.4, commit c38c192fdd); end the profile at the "
-                         "cycle's X")
-    if code.startswith("72") and abs(back.imag) > 0 and front.real * (start.real - end.real) < 0:
-        raise unmodelled(f"{name}: the profile ends at Z{end.real:g}, short of the cycle's Z{start.real:g}: LinuxCNC "
-                         "versions cut it differently (interp_g7x.cc adds a move to the cycle's Z from 2.9.1, commit "
-                         "03793cc9fa, under another condition from 2.9.4, commit c38c192fdd); end the profile at the "
-                         "cycle's Z")
+    axis, at, cycle = ("Z", end.real, z) if facing else ("X", end.imag, x)
+    raise unmodelled(f"{name}: the profile ends at {axis}{at:g}, not at the cycle's {axis}{cycle:g}: LinuxCNC versions "
+                     f"cut it differently (interp_g7x.cc: 2.9.0 leaves it open, 2.9.1 adds a move to the cycle's "
+                     f"{axis}, commit 03793cc9fa, 2.9.4 only when the profile ends short of it, commit c38c192fdd); "
+                     "name the version in the set-up (<Controller version=\"2.9.0\"/>) or end the profile at the "
+                     f"cycle's {axis}")
+
+
+def _run_profile(running: Any, label: str, block: Block, ctx: Context, name: str, at: Location,
+                 point: dict[str, float]) -> Generator[Written, None, None]:
+    """The profile's blocks as the controller reads them when the cycle runs: the subprogram run as a call from
+    the cycle by the program's own interpreter (``Interpreter.call_apart``), through its o-word loops, branches,
+    calls and parameter assignments, each block's words evaluated with the parameters as they then stand [V:
+    ``interp_g7x.cc`` ``convert_g7x``: ``read("O<q> CALL")``, then ``convert_control_functions`` and the block's
+    parameter settings at each block read, until the call level is back to the cycle's; rs274 2.9.0~pre1 run
+    here cuts ``nc_files/lathe_g7x_face_boring.ngc``'s ``REPEAT [3]`` three times, tests/test_ngc_g7x.py]. A read
+    of the current position (``#<_x>``, ``#5420``..) reads the profile's own point (``point``, which ``_profile``
+    moves on before the next block is read: ``_evaluated``). A fillet or chamfer block, whose words travel
+    inert (``ProfileCollector``), gives its words as written, evaluated here. An error of the run is located at
+    the cycle's Q and names the profile's line."""
+    from postproc.interp.evaluation import evaluate_number  # (the interpreter's modules: a profile's cost only)
+
+    corners = {line: (words, values) for body in ctx.run_data.get(PROFILES_KEY, {}).values()
+               for line, words, values in body if words and words[0][0] != STATEMENT}
+    variables = running.vars
+    errors: list[PostprocError] = []
+    with _profile_readings(ctx, variables, point):
+        for concrete in running.call_apart(label, block, errors.append):
+            origin = getattr(concrete, "origin", None)
+            if not _corner_block(concrete):
+                yield concrete.line, list(concrete.words), {}
+                continue
+            found = corners.get(concrete.line)
+            if found is None or origin is not None and origin.file != ctx.file:
+                raise UnsupportedError(f"{name}'s profile, line {concrete.line}: a fillet or chamfer block of another "
+                                       "file's subprogram is not modelled", at)
+            words, values = found
+            out: list[tuple[str, str]] = []
+            for letter, text in words:
+                value = values.get(letter.upper())
+                if isinstance(value, Expr):
+                    try:
+                        text = repr(evaluate_number(value, variables, f"{letter}{text}"))
+                    except PostprocError as err:
+                        raise ProgramError(f"{name}'s profile, line {concrete.line}: {err.message}", at) from None
+                out.append((letter, text))
+            yield concrete.line, out, {}
+    if errors:
+        where = errors[0].location
+        line = f", line {where.line}" if where is not None else ""
+        raise ProgramError(f"{name}'s profile{line}: {errors[0].message}", at)
+
+
+class _profile_readings:
+    """While a profile is read: the current position (``#<_x>``, ``#<_z>``, #5420, #5422) reads the profile's
+    own ``point`` (in program units, X a radius), the other axes and offsets as the machine stands
+    (``FrameReadings``); ``_evaluated`` gives the source."""
+
+    def __init__(self, ctx: Context, variables: Any, point: dict[str, float]) -> None:
+        self.ctx, self.variables, self.point = ctx, variables, point
+        self.saved: Any = None
+
+    def __enter__(self) -> None:
+        # imported here: the interpreter's modules import decimal, which a plain translation to LinuxCNC must not
+        # pay for at start-up (tests/test_startup_imports.py); only a cycle's profile comes here
+        from postproc.frames.parameters import FrameReadings
+        from postproc.rs274.variables import NgcVariables
+
+        point = self.point
+
+        class ProfileReadings(FrameReadings):
+            """The frame as the profile's words read it: the profile's point on X and Z, the rest as it stands."""
+
+            __slots__ = ()
+
+            def position(self, axis: str) -> float | None:
+                return point[axis] if axis in point else super().position(axis)
+
+            def state(self) -> Any:  # a loop that moves the profile's point on is not repeating itself
+                return (super().state(), point["X"], point["Z"])
+
+        if isinstance(self.variables, NgcVariables):
+            self.saved = self.variables.frames
+            self.variables.frames = ProfileReadings(self.ctx)
+
+    def __exit__(self, *exc: object) -> None:
+        from postproc.rs274.variables import NgcVariables
+        if isinstance(self.variables, NgcVariables):
+            self.variables.frames = self.saved
 
 
 def _evaluated(words: list[tuple[str, str]], values: dict[str, Any], ctx: Context,
@@ -276,21 +382,8 @@ def _evaluated(words: list[tuple[str, str]], values: dict[str, Any], ctx: Contex
     at X25 Z1; under G7 with the cycle's X60 ``X[#<_x>-10]`` ends at the radius 10 (``#<_x>`` reads the radius
     30); LinuxCNC's ``nc_files/lathe_g7x_face_boring.ngc`` steps its profile by ``#<_x>``, tests/test_ngc_g7x.py].
     The other axes read as the machine stands (``FrameReadings``)."""
-    # imported here: the interpreter's modules import decimal, which a plain translation to LinuxCNC must not
-    # pay for at start-up (tests/test_startup_imports.py); only a cycle's profile comes here
-    from postproc.interp.evaluation import evaluate_number
+    from postproc.interp.evaluation import evaluate_number  # (the interpreter's modules: ``_profile_readings``)
     from postproc.interp.run_state import is_number
-
-    from postproc.frames.parameters import FrameReadings
-    from postproc.rs274.variables import NgcVariables
-
-    class ProfileReadings(FrameReadings):
-        """The frame as the profile's words read it: the profile's point on X and Z, the rest as it stands."""
-
-        __slots__ = ()
-
-        def position(self, axis: str) -> float | None:
-            return point[axis] if axis in point else super().position(axis)
 
     variables = ctx.run_data.get(RUN_VARIABLES_KEY)
     out: list[tuple[str, str]] = []
@@ -302,16 +395,11 @@ def _evaluated(words: list[tuple[str, str]], values: dict[str, Any], ctx: Contex
         if variables is None or letter.upper() == "G" or not _global(value):
             raise unmodelled(f"{letter}{text}: a computed word in a G70-G72 profile reading a local parameter or "
                              "giving the G code is not supported (write the numbers, or use global parameters)")
-        frames = variables.frames if isinstance(variables, NgcVariables) else None
-        if isinstance(variables, NgcVariables):
-            variables.frames = ProfileReadings(ctx)
         try:
-            number = evaluate_number(value, variables, f"{letter}{text}")
+            with _profile_readings(ctx, variables, point):
+                number = evaluate_number(value, variables, f"{letter}{text}")
         except PostprocError as err:
             raise unmodelled(f"{letter}{text}: {err.message}") from None
-        finally:
-            if isinstance(variables, NgcVariables):
-                variables.frames = frames
         out.append((letter, repr(number)))
     return out
 
@@ -333,10 +421,12 @@ def _global(expr: Expr) -> bool:
     return False
 
 
-def _profile(written: list[Written], start: complex, ctx: Context, name: str, at: Location,
-             scale: float) -> list[Piece]:
-    """The cycle's pieces: the approach from ``start``, then the subprogram's moves (module docstring); a
-    refusal is located at the cycle's Q and names the profile's line."""
+def _profile(written: Iterator[Written], start: complex, ctx: Context, name: str, at: Location,
+             scale: float, point: dict[str, float]) -> list[Piece]:
+    """The cycle's pieces: the approach from ``start``, then the subprogram's moves (module docstring), read
+    one block at a time: ``point`` is moved on to each move's end before the next block is read (where a
+    read of the current position reads it: ``_evaluated``, ``_run_profile``); a refusal is located at the
+    cycle's Q and names the profile's line."""
     pieces: list[Piece] = []
     mode: str | None = None
     absolute_centres = arc_centres.STATE_KEY in ctx.state.extra
@@ -349,10 +439,11 @@ def _profile(written: list[Written], start: complex, ctx: Context, name: str, at
             return UnsupportedError(f"{name}'s profile, line {line}: {message}", at)
 
         if words and words[0][0] == STATEMENT:
-            raise unmodelled(f"'{words[0][1]}': a control statement or parameter assignment in a profile is not "
-                             "modelled (the controller runs it as it reads the profile: write the moves it makes)")
+            raise unmodelled(f"'{words[0][1]}': a control statement or parameter assignment in a profile of a "
+                             "program kept as written is not modelled (the controller runs it as it reads the "
+                             "profile, and the program is not run here: write the moves it makes)")
         if values:
-            words = _evaluated(words, values, ctx, unmodelled, {"X": here.imag, "Z": here.real})
+            words = _evaluated(words, values, ctx, unmodelled, point)
         got: dict[str, float] = {}
         for letter, num in words:
             up = letter.upper()
@@ -410,4 +501,5 @@ def _profile(written: list[Written], start: complex, ctx: Context, name: str, at
         if "C" in got:
             pieces.append(Chamfer(got["C"], end))
         here = end
+        point["X"], point["Z"] = here.imag, here.real
     return pieces
