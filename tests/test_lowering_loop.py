@@ -115,6 +115,25 @@ def test_a_plain_move_skips_a_step_that_says_moves_are_not_its_business() -> Non
     assert seen == ["b:p", "a:q", "b:q", "a:end", "b:end"]
 
 
+class _MoveLog(_Log):
+    """A ``_Log`` that says which of its methods the loop called: ``take_move`` for a block only a move."""
+
+    def take_move(self, block: Block) -> list[Block] | None:
+        self.seen.append(f"{self.name}-move:{block.text}")
+        return self.take(block)
+
+
+def test_a_block_only_a_move_goes_to_take_move_once_it_is_one() -> None:
+    """The loop asks ``only_move`` once and hands such a block to ``take_move``, any other to ``take``; the blocks
+    a step makes are asked again on their way through the later steps (``_onward``)."""
+    seen: list[str] = []
+    a = _Log("a", seen, twice="p")
+    b = _MoveLog("b", seen)
+    out = _texts(run_blocks(iter([_block("p", True), _block("q", False)]), [a, b]))
+    assert out == ["p", "p'", "q"]
+    assert seen == ["a:p", "b-move:p", "b:p", "b-move:p'", "b:p'", "a:q", "b:q", "a:end", "b:end"]
+
+
 def test_steps_run_as_one_step_as_they_run_in_the_loop() -> None:
     blocks = [("a", False), ("b", True), ("c", False), ("d", True)]
     alone: list[str] = []

@@ -53,8 +53,8 @@ def test_a_straight_move_under_an_offset_is_the_general_paths(start: dict[str, f
     kind = "rapid" if rapid else "feed"
     direct, direct_events = _simulator(start, length, shift, feed, "XY")
     general, general_events = _simulator(start, length, shift, feed, "XY")
-    direct._offset_line(kind, dict(target), 7)
-    general._compensated(kind, dict(target), 7, None, None)
+    direct._offset_line(kind, [target[a] for a in direct.axes], 7)  # (a point in the order of the machine's axes)
+    general._compensated(kind, [target[a] for a in general.axes], 7, None, None)
     assert [json.dumps(ev) for ev in direct_events] == [json.dumps(ev) for ev in general_events]
     assert _state(direct) == _state(general)
 
@@ -69,7 +69,7 @@ def test_an_arc_under_an_offset_is_the_general_paths(start: dict[str, float], en
     kind = "cw" if clockwise else "ccw"
     direct, direct_events = _simulator(start, length, shift, feed, plane)
     general, general_events = _simulator(start, length, shift, feed, plane)
-    direct._offset_arc(kind, dict(end), 9, centre, plane)
-    general._compensated(kind, dict(end), 9, centre, plane)
+    direct._offset_arc(kind, [end[a] for a in direct.axes], 9, centre, plane)
+    general._compensated(kind, [end[a] for a in general.axes], 9, centre, plane)
     assert [json.dumps(ev) for ev in direct_events] == [json.dumps(ev) for ev in general_events]
     assert _state(direct) == _state(general)

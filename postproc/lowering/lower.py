@@ -41,9 +41,9 @@ TRANSFORMS: list[Lowering] = []
 class BlockStep:
     """One run of a ``LoweringStep``: its state, and what it makes of each block.
 
-    ``take`` gets every block the step before it gives, in order, except blocks that are only a move
-    (``only_move``) while ``moves`` is False: the step says so when such a block can neither change its
-    state nor be changed by it (it may set ``moves`` again at any block). ``take`` returns None for the
+    ``take`` gets every block the step before it gives, in order (a block that is only a move through
+    ``take_move``), except blocks that are only a move (``only_move``) while ``moves`` is False: the step
+    says so when such a block can neither change its state nor be changed by it (it may set ``moves`` again at any block). ``take`` returns None for the
     block as it is (perhaps changed in place), or the blocks that replace it (none: dropped or held;
     several: an expansion, or held blocks given back). ``finish`` gives what is still held at the end."""
 
@@ -53,6 +53,11 @@ class BlockStep:
 
     def take(self, block: Block) -> list[Block] | None:
         raise NotImplementedError
+
+    def take_move(self, block: Block) -> list[Block] | None:
+        """``take`` for a block that is only a move (``only_move``, asked once by the loop: a step that
+        follows every move overrides this to skip asking its own block again); the same result as ``take``."""
+        return self.take(block)
 
     def finish(self) -> list[Block]:
         return []
@@ -141,9 +146,12 @@ def run_blocks(blocks: Iterator[Block], steps: list[BlockStep]) -> Iterator[Bloc
         while i < n:
             step = steps[i]
             i += 1
-            if plain and not step.moves:
-                continue
-            out = step.take(block)
+            if plain:
+                if not step.moves:
+                    continue
+                out = step.take_move(block)
+            else:
+                out = step.take(block)
             if out is None:
                 continue
             if len(out) == 1:
@@ -169,9 +177,12 @@ def _onward(block: Block, steps: list[BlockStep], start: int) -> Iterator[Block]
     while i < n:
         step = steps[i]
         i += 1
-        if plain and not step.moves:
-            continue
-        out = step.take(block)
+        if plain:
+            if not step.moves:
+                continue
+            out = step.take_move(block)
+        else:
+            out = step.take(block)
         if out is None:
             continue
         if len(out) == 1:

@@ -20,7 +20,7 @@ from ..lowering.inverse_time import move_length
 from ..ir.state import PLANE_AXES
 from .events import CUTTER_RADIUS, LATHE_TOOL_OFFSET, TOOL_LENGTH, Event, num
 from .move_record import Emitted, MoveRecord
-from .position import LENGTH_AXIS, Position
+from .position import LENGTH_AXIS, Position, point_dict
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -100,13 +100,14 @@ class CompensatedMoves(Position):
         ``gcode.c``: an axis without a word keeps ``gc_state.position``, the machine position, and only an
         absolute word adds ``tool_length_offset``). A later incremental move moves the machine by its
         increment, an absolute one goes to the programmed point plus the new length."""
-        if LENGTH_AXIS not in self.pos:
+        i = self.length_index
+        if i < 0:
             return
         self._begin()  # the controlled point before the change is the one kept
-        self.pos = dict(self.pos)  # the old dict may be a queued segment's end
-        self.pos[LENGTH_AXIS] -= change
+        self.at = list(self.at)  # (never changed in place)
+        self.at[i] -= change
         self.rounded = list(self.rounded)
-        self.rounded[self.index[LENGTH_AXIS]] = num(self.pos[LENGTH_AXIS])
+        self.rounded[i] = num(self.at[i])
         self._settle()
 
     def lathe_offset(self, block: Block, register: object) -> None:
@@ -144,12 +145,13 @@ class CompensatedMoves(Position):
             return
         if self.length_at_axis:
             self._begin()
-            self.pos, self.rounded = dict(self.pos), list(self.rounded)
+            self.at, self.rounded = list(self.at), list(self.rounded)
             for axis in sorted(set(new) | set(old)):
                 change = new.get(axis, 0.0) - old.get(axis, 0.0)
-                if change and axis in self.pos:
-                    self.pos[axis] -= change
-                    self.rounded[self.index[axis]] = num(self.pos[axis])
+                if change and axis in self.index:
+                    i = self.index[axis]
+                    self.at[i] -= change
+                    self.rounded[i] = num(self.at[i])
         self.lathe_shift = new
         if new:
             self._begin()
@@ -204,10 +206,11 @@ class CompensatedMoves(Position):
             self.crounded = list(self.rounded)
 
     # -- compensation -------------------------------------------------------------------------------
-    def _compensated(self, kind: str, target: dict[str, float], line: int, centre: tuple[float, float] | None,
+    def _compensated(self, kind: str, end: list[float], line: int, centre: tuple[float, float] | None,
                      plane: str | None) -> None:
         """A move handed to the compensation: the cutter queue (when compensating the radius) or straight
-        to ``_write``; the programmed point moves on at once."""
+        to ``_write``; the programmed point moves on at once (the segment holds its end as a dictionary)."""
+        target = point_dict(self.axes, end)
         fields: Event = {"line": line}
         if kind != "rapid":
             self._feed_into(fields)
@@ -236,8 +239,8 @@ class CompensatedMoves(Position):
                 cutter.arc(seg, start)
         else:
             self._write(seg)
-        self.pos = target
-        self.rounded = [num(target[a]) for a in self.axes]
+        self.at = end
+        self.rounded = [num(v) for v in end]
         self._settle()
 
     def _programmed_rate(self, fields: Event, kind: str, target: dict[str, float],
@@ -257,12 +260,12 @@ class CompensatedMoves(Position):
         else:
             fields["feed_mode"] = "per_min"
 
-    def _offset_line(self, kind: str, target: dict[str, float], line: int) -> None:
+    def _offset_line(self, kind: str, target: list[float], line: int) -> None:
         """A straight move under a tool length alone (a whole program after its G43): ``_write``'s result,
         the programmed point rounded only on the axes that move (as ``line_move``). One pass over the axes
         builds both points (the record's lists): the values stay the objects ``num`` made (an int stays an int
         in the JSON line), compared per axis rather than as dictionaries."""
-        pos, rounded, before = self.pos, self.rounded, self.crounded
+        at, rounded, before = self.at, self.rounded, self.crounded
         offset = self.length.offset
         shifts = self.lathe_shift
         length_at = self.length_index
@@ -273,10 +276,9 @@ class CompensatedMoves(Position):
         f: float | int | None = None
         mode: str | None = None
         for i in range(len(axes)):
-            axis = axes[i]
-            value = target[axis]
+            value = target[i]
             r: Any
-            if value == pos[axis]:
+            if value == at[i]:
                 r = rounded[i]
             else:
                 r = num(value)
@@ -284,7 +286,7 @@ class CompensatedMoves(Position):
             if i == length_at:
                 c = num(value + offset)
             if shifts:
-                shift = shifts.get(axis)
+                shift = shifts.get(axes[i])
                 if shift is not None:
                     c = num(value + shift + (offset if i == length_at else 0.0))
             point.append(r)  # (appended: compiled, ``[0] * n`` and a store by index cost ~600 instructions a move
@@ -299,27 +301,28 @@ class CompensatedMoves(Position):
             f = self._feed_value()
             mode = self._stated_mode()
         if not moved:
-            self.pos, self.rounded = target, point
+            self.at, self.rounded = target, point
             self._settle()
             return
-        self.pos, self.rounded, self.crounded = target, point, crounded
+        self.at, self.rounded, self.crounded = target, point, crounded
         record = MoveRecord(line, kind, self.key_names, point, f, mode, crounded if apart else None)
         self.out(record if self.records else record.event())
         self._settle()
 
-    def _offset_arc(self, kind: str, target: dict[str, float], line: int, c: tuple[float, float], plane: str) -> None:
+    def _offset_arc(self, kind: str, target: list[float], line: int, c: tuple[float, float], plane: str) -> None:
         """An arc under a tool length (and a lathe's tool offset) alone: ``_compensated``'s and ``_write``'s event
         for it, without the cutter's segment (an interpreted object: ~25k instructions an arc)."""
         a1, a2, normal = PLANE_AXES[plane]
-        pos = self.pos
         offset = self.length.offset
         shifts = self.lathe_shift
-        centre = {a1: c[0], a2: c[1], normal: pos.get(normal, 0.0)}
+        centre = {a1: c[0], a2: c[1], normal: self.axis_value(self.at, normal)}
         rounded: list[float | int] = []
         crounded: list[float | int] = []
         apart = False
-        for axis in self.axes:
-            value = target[axis]
+        axes = self.axes
+        for k in range(len(axes)):
+            axis = axes[k]
+            value = target[k]
             r = num(value)
             controlled = value
             if offset and axis == LENGTH_AXIS:
@@ -349,7 +352,7 @@ class CompensatedMoves(Position):
                 apart = True
         f = self._feed_value()
         mode = self._stated_mode()
-        self.pos, self.rounded, self.crounded = target, rounded, crounded
+        self.at, self.rounded, self.crounded = target, rounded, crounded
         record = MoveRecord(line, kind, self.key_names, rounded, f, mode, crounded if apart else None,
                             self.centre_keys, written, plane, cwritten if apart else None)
         self.out(record if self.records else record.event())
@@ -411,7 +414,7 @@ class CompensatedMoves(Position):
                 if axis in ccentre:
                     ccentre[axis] += shift
             for axis in ("X", "Y", "Z"):
-                if axis in self.pos:
+                if axis in self.index:
                     scale = 2.0 if diameter and axis == "X" else 1.0
                     ev[CENTRE_KEYS[axis]] = num(centre[axis] * scale)
                     ctrl[CENTRE_KEYS[axis]] = num(ccentre[axis] * scale)

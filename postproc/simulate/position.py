@@ -39,6 +39,14 @@ CENTRE_LETTER = {"X": "I", "Y": "J", "Z": "K"}
 """An arc centre's letter by its axis (for an error's column: ``Moves.arc_move``)."""
 
 
+def point_dict(axes: tuple[str, ...], point: list[float]) -> dict[str, float]:
+    """A point in the order of ``axes`` as a dictionary (axis -> value)."""
+    out: dict[str, float] = {}
+    for i in range(len(axes)):
+        out[axes[i]] = point[i]
+    return out
+
+
 def _nowhere(ev: Emitted) -> None:
     raise AssertionError("an event released outside a block")
 
@@ -60,12 +68,18 @@ class Position:
         self.records = False
         """A straight move is emitted as its ``MoveRecord`` (``toolpath_stream``'s readers take them), else as the
         record's dictionary (``MoveRecord.event``)."""
-        self.pos = start_position(setup)
+        start = start_position(setup)
+        self.at: list[float] = [start[a] for a in self.axes]
+        """The programmed point, mm (degrees on a rotary axis), in the order of ``axes``: a list by place, where a
+        dictionary by axis letter cost each move a copy, a look-up and a write an axis word, and a look-up an axis
+        to compare (compiled, ~2.5k instructions a move; callgrind, branch simfast4). Never changed in place: a new
+        list where it changes (a move's end is the list ``target`` made). ``pos`` gives it as a dictionary, for
+        the readers that are not hot."""
         self.index = {a: i for i, a in enumerate(self.axes)}
-        """Machine axis -> its place in ``axes`` (and in the rounded points)."""
+        """Machine axis -> its place in ``axes`` (and in ``at`` and the rounded points)."""
         self.length_index = self.index.get(LENGTH_AXIS, -1)
         """The place of the tool length's axis in ``axes`` (-1: the machine has none)."""
-        self.rounded: list[float | int] = [num(self.pos[a]) for a in self.axes]
+        self.rounded: list[float | int] = [num(v) for v in self.at]
         """The programmed point as the events write it (``num``), in the order of ``axes``: a list, where a
         dictionary cost each move under a tool length ~1.5k instructions in look-ups and writes (compiled). Never
         changed in place (nor is ``crounded``): a ``MoveRecord`` holds it; a change makes a new list."""
@@ -101,9 +115,9 @@ class Position:
         self.diameter = ctx.diameter
         """X words are diameters: the position is kept as a radius (true geometry, arcs with radius I) and
         written as a diameter."""
-        self.factors: dict[str, float] = {}
-        """Per machine axis, mm of the position per unit of its word (``scale``, a diameter's half): ``target``
-        reads one number an axis word, and a letter not here is no axis of the machine."""
+        self.factors: list[float] = []
+        """Per machine axis (in the order of ``axes``), mm of the position per unit of its word (``scale``, a
+        diameter's half): ``target`` reads one number an axis word."""
         self.set_scale(1.0)
         if self.lathe:
             self.modal.plane = "ZX"
@@ -197,33 +211,50 @@ class Position:
         self.written_f: float | int = 0
         """The feed ``_feed_into`` last wrote and its ``num`` (the feed of a CAM program changes rarely)."""
 
+    @property
+    def pos(self) -> dict[str, float]:
+        """The programmed point as a dictionary (axis -> mm), made when read: changing it changes nothing."""
+        return point_dict(self.axes, self.at)
+
+    @pos.setter
+    def pos(self, point: dict[str, float]) -> None:
+        self.at = [point[a] for a in self.axes]
+
+    def axis_value(self, point: list[float], axis: str) -> float:
+        """``point``'s value on ``axis`` (a point in the order of ``axes``); 0.0 for an axis the machine lacks."""
+        i = self.index.get(axis, -1)
+        return point[i] if i >= 0 else 0.0
+
     def target(self, block: Block, axes: dict[str, float | Expr], absolute: bool,
-               machine: bool = False) -> dict[str, float]:
-        """End point in mm of programmed axis words (absolute or incremental); an absolute point in work
-        coordinates is shifted by the work offset a G10 set (``shift``), one in machine coordinates not."""
-        pos = self.pos
-        out = dict(pos)
+               machine: bool = False) -> list[float]:
+        """End point in mm of programmed axis words (absolute or incremental), in the order of ``axes``; an
+        absolute point in work coordinates is shifted by the work offset a G10 set (``shift``), one in machine
+        coordinates not."""
+        at = self.at
+        out = list(at)
         incremental = self.incremental and not absolute
         shift = self.shift if not machine and not incremental and self.shift else None  # (tested once, not a word)
         increments = self.increments if self.increments else None  # empty on a mill: tested once, not a word
         factors = self.factors
+        index = self.index
         for axis, value in axes.items():
             if not isinstance(value, float) and isinstance(value, Expr):  # a float first: one type test a word
                 raise ProgramError(UNEVALUATED, self._at(block, axis))
             real = increments.get(axis) if increments is not None else None
             if real is not None:
-                if real not in pos:
+                r = index.get(real, -1)
+                if r < 0:
                     raise ProgramError(f"axis {real} is not on this machine (axes {''.join(self.axes)})",
                                        self._at(block, axis))
                 v = value * self.scale * (0.5 if self.diameter and real == "X" else 1.0)
-                out[real] = out[real] + v
+                out[r] = out[r] + v
                 continue
-            factor = factors.get(axis)
-            if factor is None:
+            i = index.get(axis, -1)
+            if i < 0:
                 raise ProgramError(f"axis {axis} is not on this machine (axes {''.join(self.axes)})",
                                    self._at(block, axis))
-            v = value * factor
-            out[axis] = pos[axis] + v if incremental else v + shift.get(axis, 0.0) if shift is not None else v
+            v = value * factors[i]
+            out[i] = at[i] + v if incremental else v + shift.get(axis, 0.0) if shift is not None else v
         return out
 
 
@@ -232,8 +263,8 @@ class Position:
         diameter's half times the scale is the scale's half, exactly)."""
         self.scale = scale
         diameter = self.diameter
-        self.factors = {a: (scale if a in LINEAR_AXES else 1.0) * (0.5 if diameter and a == "X" else 1.0)
-                        for a in self.axes}
+        self.factors = [(scale if a in LINEAR_AXES else 1.0) * (0.5 if diameter and a == "X" else 1.0)
+                        for a in self.axes]
 
     def note_tool_data(self, line: int, kind: str, what: str, value: float) -> None:
         """Record a change of the tool data in force (``tool_data``); the same value again is no change."""
@@ -299,10 +330,10 @@ class Position:
             value = setting.values.get(axis)
             if not isinstance(value, (int, float)):
                 continue
-            if axis not in self.pos:
+            if axis not in self.index:
                 raise ProgramError(f"axis {axis} is not on this machine", self._at(block, axis))
             in_force = self.length.offset if axis == LENGTH_AXIS else self.lathe_shift.get(axis, 0.0)
-            measured = self.pos[axis] + in_force - (value * self.scale + system.get(axis, 0.0))
+            measured = self.at[self.index[axis]] + in_force - (value * self.scale + system.get(axis, 0.0))
             if axis == LENGTH_AXIS:
                 self.tools.set("length", setting.index, measured)
             else:
@@ -345,21 +376,23 @@ class Position:
                 raise ProgramError("a change of work offset with cutter compensation on cannot be run",
                                    self._at(block))  # [V] LinuxCNC: "Cannot change coordinate systems with cutter radius compensation on"
             delta = before - after
-            self.pos[axis] += delta
             i = self.index[axis]
+            self.at = list(self.at)
+            self.at[i] += delta
             self.rounded, self.crounded = list(self.rounded), list(self.crounded)  # (a record may hold them)
-            self.rounded[i] = num(self.pos[axis])
+            self.rounded[i] = num(self.at[i])
             self.crounded[i] = num(self.crounded[i] + delta)
         self.beyond = new
 
     def _coordinate(self, block: Block, axis: str, value: float) -> None:
         """Coordinate setting: the tool's present point gets ``value`` on ``axis``; nothing moves."""
-        if axis not in self.pos:
+        if axis not in self.index:
             raise ProgramError(f"axis {axis} is not on this machine (axes {''.join(self.axes)})", self._at(block, axis))
         v = value * self.scale * (0.5 if self.diameter and axis == "X" else 1.0)
         if self.travel is not None:
             self.travel.coordinate_set(axis, v)
-        self.pos[axis] = v
+        self.at = list(self.at)
+        self.at[self.index[axis]] = v
         self.rounded = list(self.rounded)  # (a record may hold it)
         self.rounded[self.index[axis]] = num(v)
 

@@ -25,6 +25,7 @@ from .events import (CUTTER_RADIUS, LATHE_TOOL_OFFSET, TOOL_SELECTION, UNEVALUAT
                      _setting_text)
 from .move_record import Emitted, MoveRecord
 from .moves import PATH_CONTROL, Moves
+from .position import point_dict
 from .work_offsets import offset_beyond_frame
 
 LENGTH_AXIS: Final = _AXIS
@@ -410,18 +411,20 @@ class Simulator(Moves):
                 raise ProgramError("a reference return with cutter compensation on cannot be run", self._at(block))
             via = self.target(block, m.axes, absolute)
             if travel is not None:
-                travel.line(block, self.pos, via, self._programmed(m.axes), self.incremental and not absolute, False)
+                travel.line(block, self.pos, point_dict(self.axes, via), self._programmed(m.axes),
+                            self.incremental and not absolute, False)
             self.line_move("rapid", via, line, emit)
-            ref = dict(self.pos)
+            ref = list(self.at)
+            index = self.index
             for axis in m.axes:
                 key = self.increments.get(axis, axis)
-                ref[key] = self.home.get(key, 0.0) if mode == "home" and not self.lathe else 0.0
+                ref[index[key]] = self.home.get(key, 0.0) if mode == "home" and not self.lathe else 0.0
             self.machine_to_frame(block, ref, self._programmed(m.axes))
             if self.length.offset and LENGTH_AXIS in m.axes:
-                ref[LENGTH_AXIS] -= self.length.offset  # the reference point is a machine position
+                ref[index[LENGTH_AXIS]] -= self.length.offset  # the reference point is a machine position
             for axis, shift in self.lathe_shift.items():
                 if axis in self._programmed(m.axes):
-                    ref[axis] -= shift
+                    ref[index[axis]] -= shift
             if travel is not None:
                 travel.home(block, self._programmed(m.axes))
             if self.mark_held:
@@ -444,7 +447,7 @@ class Simulator(Moves):
         machine = ("MachineCoordinates" in block.sections if machine_coordinates is None else machine_coordinates)
         target = self.target(block, m.axes, absolute or machine, machine)
         if travel is not None and mode not in ("cw", "ccw"):  # (a machine move's values: machine positions)
-            travel.line(block, self.pos, target, self._programmed(m.axes),
+            travel.line(block, self.pos, point_dict(self.axes, target), self._programmed(m.axes),
                         self.incremental and not (absolute or machine), machine)
         if machine and self.compensating:
             self._machine_coordinates(block, m, target)
@@ -461,7 +464,7 @@ class Simulator(Moves):
         else:
             raise UnsupportedError(f"motion '{mode}' cannot be simulated", self._at(block))
 
-    def thread_move(self, block: Block, target: dict[str, float], emit: Callable[[Emitted], None]) -> None:
+    def thread_move(self, block: Block, target: list[float], emit: Callable[[Emitted], None]) -> None:
         """A spindle-synchronised thread move: ``f`` is its lead per revolution whatever the feed mode (Fanuc
         ``G32 F``: F is the lead [K]; LinuxCNC ``G33 K``: the block's ``ThreadLead``)."""
         lead = block.sections.get("ThreadLead")
@@ -488,11 +491,12 @@ class Simulator(Moves):
         pitch = tap.pitch
         if isinstance(pitch, Expr):
             raise ProgramError(UNEVALUATED, self._at(block, "K"))
-        start = dict(self.pos)
+        start = list(self.at)
         self.moved = True
         end = self.target(block, tap.axes, absolute)
         if self.travel is not None:
-            self.travel.line(block, start, end, self._programmed(tap.axes), self.incremental and not absolute, False)
+            self.travel.line(block, point_dict(self.axes, start), point_dict(self.axes, end),
+                             self._programmed(tap.axes), self.incremental and not absolute, False)
         if tap.stroke is not None:  # one stroke (ISG G331/G332): its pitch's sign is the thread's hand
             hand = "cw" if pitch > 0 else "ccw"
             if hand != self.spindle:
@@ -515,7 +519,7 @@ class Simulator(Moves):
         finally:
             self.sync = None
 
-    def machine_to_frame(self, block: Block, point: dict[str, float], axes: set[str]) -> None:
+    def machine_to_frame(self, block: Block, point: list[float], axes: set[str]) -> None:
         """Machine positions on ``axes`` of ``point`` (a move in machine coordinates, a reference point) put in
         the work frame: less the work offset the frame does not hold (the set-up's, where the program set
         none; ``postproc.simulate.work_offsets``), as LinuxCNC gives such a move in program coordinates [V
@@ -523,16 +527,17 @@ class Simulator(Moves):
         with no ``<WorkOffsets>`` at all takes every offset as zero (documented); one that gives some but not
         the active system's on an axis is a located error, never a point off by the missing offset."""
         for axis in axes:
-            if axis not in point:
+            i = self.index.get(axis, -1)
+            if i < 0:
                 continue
             beyond = self.beyond[axis]
             if beyond is None:
                 why = offset_beyond_frame(axis, self.modal.work_offset, self.offsets, self.declared)[1]
                 raise ProgramError(f"a machine position cannot be put in work coordinates: {why}",
                                    self._at(block, axis if axis in (block.text or "").upper() else None))
-            point[axis] -= beyond
+            point[i] -= beyond
 
-    def _machine_coordinates(self, block: Block, m: Motion, target: dict[str, float]) -> None:
+    def _machine_coordinates(self, block: Block, m: Motion, target: list[float]) -> None:
         """A move in machine coordinates: its value is where the machine's controlled point goes, without
         the tool length ([K] Fanuc, Haas: ``G53 Z0`` retracts the spindle to the top whatever the tool;
         [?] LinuxCNC), so the programmed point is what lies the offset below it. Cutter compensation
@@ -541,7 +546,7 @@ class Simulator(Moves):
             raise ProgramError("a move in machine coordinates with cutter compensation on cannot be run",
                                self._at(block))
         if self.length.offset and LENGTH_AXIS in self._programmed(m.axes):
-            target[LENGTH_AXIS] -= self.length.offset
+            target[self.index[LENGTH_AXIS]] -= self.length.offset
         for axis, shift in self.lathe_shift.items():
             if axis in self._programmed(m.axes):
-                target[axis] -= shift
+                target[self.index[axis]] -= shift
