@@ -195,21 +195,54 @@ def _arc(ev: Event, start_keys: Keys, start: list[float]) -> Move:
     """An arc event as a ``Move`` from ``start``: its end and centre the controlled ones where it has them
     (``compare._controlled``, read in place), its plane, radius and sweep."""
     controlled: Event | None = ev.get("controlled")
-    kind: str = ev["move"]
     f = ev.get("f")
-    line: int = ev["line"]
     keys, end = _event_point(ev, controlled)
-    m = Move(kind, None, None, None if f is None else _real(f), line, line)
-    m.start_keys, m.start_values, m.end_keys, m.end_values = start_keys, start, keys, end
     plane = ev.get("plane", "XY")
     i, j, _ = PLANE_INDEX[plane]
     ci, cj = CENTRE_KEYS["XYZ"[i]], CENTRE_KEYS["XYZ"[j]]
-    s, e = _plane_point(start_keys, start, plane), _plane_point(keys, end, plane)
+    s = _plane_point(start_keys, start, plane)
     ui: Any = ev.get(ci, s[0])
     uj: Any = ev.get(cj, s[1])
     if controlled is not None:
         ui, uj = controlled.get(ci, ui), controlled.get(cj, uj)
-    c = (float(ui), float(uj))
+    return _arc_move(ev["move"], None if f is None else _real(f), ev["line"], start_keys, start, keys, end, plane,
+                     s, (float(ui), float(uj)))
+
+
+def _arc_record(record: MoveRecord, all_axes: bool, start_keys: Keys, start: list[float]) -> Move:
+    """``_arc`` of an arc's record, read by field rather than as its event (``MoveRecord.event``, a dictionary of
+    a dozen keys built and taken apart again: ~8k instructions an arc a side): the same ``Move``, to the bit
+    (``tests/test_verify_arc_records.py`` holds the two to each other). The centre is the controlled one where
+    the record has it (``ccentre``), else the programmed one, as the event's ``controlled`` gives it."""
+    keys, end = _record_point(record, all_axes)
+    plane = record.plane if record.plane is not None else "XY"
+    i, j, _ = PLANE_INDEX[plane]
+    s = _plane_point(start_keys, start, plane)
+    centre_keys = record.centre_keys
+    centre = record.ccentre if record.controlled is not None and record.ccentre is not None else record.centre
+    ui = _centre_value(centre_keys, centre, CENTRE_KEYS["XYZ"[i]], s[0])
+    uj = _centre_value(centre_keys, centre, CENTRE_KEYS["XYZ"[j]], s[1])
+    f = record.f
+    return _arc_move(record.kind, None if f is None else _real(f), record.line, start_keys, start, keys, end, plane,
+                     s, (ui, uj))
+
+
+def _centre_value(keys: Keys, values: list[float | int] | None, k: str, default: float) -> float:
+    """A centre coordinate of a record (``default``, the start's, where it has none: as ``_arc`` reads an event)."""
+    if values is not None:
+        for n in range(len(keys)):
+            if keys[n] == k:
+                return _real(values[n])
+    return default
+
+
+def _arc_move(kind: str, f: float | None, line: int, start_keys: Keys, start: list[float], keys: Keys,
+              end: list[float], plane: str, s: tuple[float, float], c: tuple[float, float]) -> Move:
+    """An arc as a ``Move`` (``_arc``, ``_arc_record``): from ``start`` (``s`` its point in the plane) to ``end``
+    about ``c``; its radius and sweep."""
+    m = Move(kind, None, None, f, line, line)
+    m.start_keys, m.start_values, m.end_keys, m.end_values = start_keys, start, keys, end
+    e = _plane_point(keys, end, plane)
     m.plane, m.centre = plane, c
     m.radius = _hypot(s[0] - c[0], s[1] - c[1])
     m.sweep = arc_sweep(s, e, c, kind == "cw")
@@ -471,17 +504,27 @@ class Normaliser:
                 run = self.run
                 self.run = None
                 return run
-            if isinstance(item, MoveRecord) and item.centre is None:  # a straight move, read by field
+            if isinstance(item, MoveRecord):  # a move, read by field
                 kind = item.kind
                 record_keys = item.keys
                 if record_keys is not self.seen_keys:
                     self.seen_keys, self.all_axes = record_keys, _all_axes(record_keys)
+                if item.centre is not None and (kind == "cw" or kind == "ccw"):  # an arc
+                    m = _arc_record(item, self.all_axes, self.pos_keys, self.pos_values)
+                    self.pos_keys, self.pos_values = m.end_keys, m.end_values
+                    run = self.run
+                    if run is not None and _merge(run, m, eps):
+                        continue
+                    self.run = m
+                    if run is not None:
+                        return run
+                    continue
                 keys, end = _record_point(item, self.all_axes)
                 raw_f: Any = item.f
                 line = item.line
                 ev: Event | None = None
             else:
-                ev = item.event() if isinstance(item, MoveRecord) else item  # (an arc's record: read as its event)
+                ev = item
                 if "toolpath" in ev:
                     continue
                 codes = self.codes
