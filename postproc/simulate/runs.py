@@ -480,6 +480,16 @@ class Normaliser:
         self.seen_keys: Keys | None = None
         """The records' keys met last (one tuple a simulation), and whether they are all axis keys."""
         self.all_axes = False
+        self.pos3 = False
+        """``pos_values`` held unboxed too (``p0``, ``p1``, ``p2``): a point of three axes whose keys tuple is the
+        next move's (one tuple a simulation), whose steps are then taken without reading the start's list."""
+        self.p0 = self.p1 = self.p2 = 0.0
+        self.run3 = False
+        """The run is a straight one of three axes in one keys tuple (its start's, its direction's): its start and
+        direction held unboxed (``s0``.., ``u0``..), so a move that may continue it is tested without reading them
+        from their lists (``_extends``, in ``pull``). False for an arc or any other run."""
+        self.s0 = self.s1 = self.s2 = 0.0
+        self.u0 = self.u1 = self.u2 = 0.0
 
     def __iter__(self) -> Normaliser:
         return self
@@ -511,11 +521,11 @@ class Normaliser:
                     self.seen_keys, self.all_axes = record_keys, _all_axes(record_keys)
                 if item.centre is not None and (kind == "cw" or kind == "ccw"):  # an arc
                     m = _arc_record(item, self.all_axes, self.pos_keys, self.pos_values)
-                    self.pos_keys, self.pos_values = m.end_keys, m.end_values
+                    self.pos_keys, self.pos_values, self.pos3 = m.end_keys, m.end_values, False
                     run = self.run
                     if run is not None and _merge(run, m, eps):
                         continue
-                    self.run = m
+                    self.run, self.run3 = m, False
                     if run is not None:
                         return run
                     continue
@@ -541,11 +551,11 @@ class Normaliser:
                 kind = ev["move"]
                 if kind == "cw" or kind == "ccw":
                     m = _arc(ev, self.pos_keys, self.pos_values)
-                    self.pos_keys, self.pos_values = m.end_keys, m.end_values
+                    self.pos_keys, self.pos_values, self.pos3 = m.end_keys, m.end_values, False
                     run = self.run
                     if run is not None and _merge(run, m, eps):
                         continue
-                    self.run = m
+                    self.run, self.run3 = m, False
                     if run is not None:
                         return run
                     continue
@@ -556,20 +566,39 @@ class Normaliser:
             start_keys, start = self.pos_keys, self.pos_values
             n = len(keys)
             d0 = d1 = d2 = 0.0
+            e0 = e1 = e2 = 0.0  # a point of three axes: its end, unboxed
+            s0 = s1 = s2 = 0.0  # and its start, where it shares the end's keys tuple
             more: list[float] | None = None  # the steps after the third axis
             shared = keys is start_keys  # (one tuple a simulation: each key at its own index, not looked for)
-            for i in range(n):
-                d = end[i] - (start[i] if shared else point_value(start_keys, start, keys[i], i))
-                if i == 0:
-                    d0 = d
-                elif i == 1:
-                    d1 = d
-                elif i == 2:
-                    d2 = d
+            three = shared and n == 3
+            if three:
+                e0 = end[0]
+                e1 = end[1]
+                e2 = end[2]
+                if self.pos3:
+                    s0 = self.p0
+                    s1 = self.p1
+                    s2 = self.p2
                 else:
-                    if more is None:
-                        more = []
-                    more.append(d)
+                    s0 = start[0]
+                    s1 = start[1]
+                    s2 = start[2]
+                d0 = e0 - s0
+                d1 = e1 - s1
+                d2 = e2 - s2
+            else:
+                for i in range(n):
+                    d = end[i] - (start[i] if shared else point_value(start_keys, start, keys[i], i))
+                    if i == 0:
+                        d0 = d
+                    elif i == 1:
+                        d1 = d
+                    elif i == 2:
+                        d2 = d
+                    else:
+                        if more is None:
+                            more = []
+                        more.append(d)
             square = d0 * d0 + d1 * d1 + d2 * d2
             if more is not None:
                 for d in more:
@@ -578,21 +607,60 @@ class Normaliser:
             if not (0.0 < square < _INF):
                 length = _norm(d0, d1, d2, n, more)
                 if length == 0.0:
-                    self.pos_keys, self.pos_values = keys, end
+                    self._place(keys, end, three, e0, e1, e2)
                     continue
-            self.pos_keys, self.pos_values = keys, end
+            self._place(keys, end, three, e0, e1, e2)
             if ev is not None:  # (read where the move is not dropped, as before the records)
                 raw_f = ev.get("f")
                 line = ev["line"]
             f = None if raw_f is None else _real(raw_f)
             run = self.run
             if run is not None and run.unit is not None and (length < 0.0 or length > 0.0) and kind == run.kind \
-                    and _same_feed(run.f, f) and _extends(run, keys, end, line, eps):
-                continue
-            self.run = _straight(kind, start_keys, start, keys, end, f, line, d0, d1, d2, more,
-                                 _norm(d0, d1, d2, n, more) if length < 0.0 else length)
+                    and _same_feed(run.f, f):
+                if three and self.run3 and keys is run.start_keys:
+                    # ``_extends`` of a run of the same three axes, its start and direction unboxed: the same
+                    # arithmetic in the same order (``tests/test_runs_shared_keys.py`` holds it to the events')
+                    u0 = self.u0
+                    u1 = self.u1
+                    u2 = self.u2
+                    r0 = e0 - self.s0
+                    r1 = e1 - self.s1
+                    r2 = e2 - self.s2
+                    along = 0.0
+                    along += r0 * u0
+                    along += r1 * u1
+                    along += r2 * u2
+                    if not (along <= _along(run)) and not beyond(r0 - along * u0, r1 - along * u1, r2 - along * u2, 3,
+                                                                 None, eps):
+                        run.end_keys, run.end_values, run.last_line = keys, end, line
+                        run.along = along
+                        continue
+                elif _extends(run, keys, end, line, eps):
+                    continue
+            if length < 0.0:
+                length = _norm(d0, d1, d2, n, more)
+            new = _straight(kind, start_keys, start, keys, end, f, line, d0, d1, d2, more, length)
+            self.run = new
+            self.run3 = three and new.unit is not None
+            if self.run3:  # (as ``_straight`` divides them)
+                self.s0 = s0
+                self.s1 = s1
+                self.s2 = s2
+                self.u0 = d0 / length
+                self.u1 = d1 / length
+                self.u2 = d2 / length
             if run is not None:
                 return run
+
+    def _place(self, keys: Keys, end: list[float], three: bool, e0: float, e1: float, e2: float) -> None:
+        """The tool stands at ``end`` (``pos_keys``, ``pos_values``); a point of three axes in the records' keys
+        tuple (``three``: ``e0``.. its values) is held unboxed too (``pos3``)."""
+        self.pos_keys, self.pos_values = keys, end
+        self.pos3 = three
+        if three:
+            self.p0 = e0
+            self.p1 = e1
+            self.p2 = e2
 
 
 def normalise(events: Iterable[Event | MoveRecord], start: dict[str, float], eps: float,
