@@ -1,4 +1,4 @@
-"""verify's normalising reads an arc's record by field (``postproc.simulate.runs._arc_record``), no longer as the
+"""verify's normalising reads an arc's record by field (``postproc.simulate.arc_runs._arc_record``), no longer as the
 dictionary ``MoveRecord.event`` builds: the runs it makes of a stream of records are those it makes of the same
 stream as dictionaries (the path ``tests/test_normalise_reference.py`` holds to the reference), to the bit: arcs
 and straight moves mixed, on two to five axes, in every plane, with controlled points and centres (a tool length,
