@@ -17,7 +17,8 @@ from .chords import pair_with_chords
 from .events import MOVES_THE_TOOL, Event
 from .move_record import MoveRecord
 from .normal_move import FEED_TOLERANCE as FEED_TOLERANCE, Move, same_feed as _same_feed  # (public names here too)
-from .runs import Normaliser, beyond, key_index, norm, normalise as normalise, point_value, pull_item
+from .points import beyond, key_index, norm, point_value
+from .runs import Normaliser, normalise as normalise, pull_item
 
 Point = tuple[float, float, float]
 
