@@ -191,8 +191,15 @@ def test_listing_the_dialects_loads_no_xml_parser(tmp_path: Path) -> None:
 
 
 def test_a_set_up_file_is_validated_with_pydantic(tmp_path: Path, one_line: Path) -> None:
-    """The other side of the lazy import: ``--machine`` does load the validator (the probe is not blind)."""
-    setup = ROOT / "examples/setups" / "fanuc_0i_mf_vmc.xml"
+    """The other side of the lazy import: ``--machine`` does load the validator (the probe is not blind) for a
+    value the set-up lane leaves to it (``5e-1``: not a plain spelling, ``postproc.fast.setup_values``), and
+    a set-up of plain values (a shipped example) is read without it."""
+    plain = ROOT / "examples/setups" / "fanuc_0i_mf_vmc.xml"
+    modules = modules_after(tmp_path, "translate", str(one_line), "--from", "fanuc", "--to", "linuxcnc",
+                            "--machine", str(plain))
+    assert "postproc.setup.load" in modules and not loaded(modules, "pydantic")
+    setup = tmp_path / "exponent.xml"
+    setup.write_text('<MachineSetup><Cycles peckRetract="5e-1"/></MachineSetup>')
     modules = modules_after(tmp_path, "translate", str(one_line), "--from", "fanuc", "--to", "linuxcnc",
                             "--machine", str(setup))
     assert loaded(modules, "pydantic") and "postproc.setup.validate" in modules

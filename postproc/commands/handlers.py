@@ -24,7 +24,11 @@ from .progress import AboveProgress, progress_for
 def _setup(path: str | None, lib: Sequence[str] = ()) -> MachineSetup:
     if path:
         check_named_file(path)
-    setup = load_setup(path, groups=default_registry().setup_groups) if path else MachineSetup()
+    if path:
+        from ..fast.setup_values import plain_record  # the set-up lane: pydantic only for what it cannot read
+        setup = load_setup(path, groups=default_registry().setup_groups, lane=plain_record)
+    else:
+        setup = MachineSetup()
     for folder in lib:
         if not os.path.isdir(folder):
             raise UsageError(f"--lib {folder}: no such directory")

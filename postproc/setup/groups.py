@@ -5,7 +5,7 @@ it imports neither)."""
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any, ClassVar, Literal
+from typing import TYPE_CHECKING, Any, Callable, ClassVar, Literal
 
 from ..errors import ConfigError
 from ..records import record
@@ -399,8 +399,10 @@ def builtin_groups() -> dict[str, type[SetupGroup]]:
     return {cls.TAG: cls for cls in GROUPS}
 
 
-def machine_codes_from_xml(el: etree._Element) -> list[MachineCode]:
-    """``<MachineCodes>`` holds ``<M>`` and ``<G>`` elements; a code declared twice is an error."""
+def machine_codes_from_xml(el: etree._Element, lane: Callable[[type[Any], dict[str, Any]], Any] | None = None
+                           ) -> list[MachineCode]:
+    """``<MachineCodes>`` holds ``<M>`` and ``<G>`` elements; a code declared twice is an error. ``lane``: a
+    shortcut past pydantic for plain values (``postproc.setup.load.Lane``)."""
     from .validate import Invalid, validate
     if el.attrib:
         raise ConfigError("<MachineCodes> takes no attributes, only <M> and <G> elements", where(el))
@@ -413,8 +415,10 @@ def machine_codes_from_xml(el: etree._Element) -> list[MachineCode]:
             raise ConfigError(f"unknown element <{child.tag}> in <MachineCodes> (expected <M> or <G>)", where(child))
         if len([c for c in child if isinstance(c.tag, str)]):
             raise ConfigError(f"<{child.tag}> takes attributes only", where(child))
+        raw = {"letter": child.tag, **dict(child.attrib)}
+        plain = lane(MachineCode, raw) if lane is not None else None
         try:
-            code = validate(MachineCode, {"letter": child.tag, **dict(child.attrib)})
+            code = plain if isinstance(plain, MachineCode) else validate(MachineCode, raw)
         except Invalid as exc:
             field_name, msg = exc.problems[0]
             raise ConfigError(f"<{child.tag}> {field_name}: {msg}" if field_name else f"<{child.tag}> {msg}",

@@ -34,6 +34,9 @@ MAX_CHAIN = 64
 MAX_SETUP_BYTES = 4 << 20
 """Bytes of one set-up file: its largest honest part is a template, far below this."""
 ROOT_ATTRIBUTES = ("name", "dialect", "pipeline", "extends")
+Lane = Callable[[type[Any], dict[str, Any]], Any]
+"""A shortcut past pydantic a caller may pass (``postproc.fast.setup_values.plain_record``): the record built
+from its raw values, or None when pydantic must validate them (``validate``)."""
 
 
 @dataclass
@@ -118,9 +121,12 @@ def shipped_bases() -> list[str]:
 class Merger:
     """Merges a chain of ``<MachineSetup>`` roots and validates the result, collecting every problem."""
 
-    def __init__(self, groups: dict[str, type["SetupGroup"]], final_dir: Path | None) -> None:
+    def __init__(self, groups: dict[str, type["SetupGroup"]], final_dir: Path | None,
+                 lane: Lane | None = None) -> None:
         self.groups = groups
         self.final_dir = final_dir
+        self.lane = lane
+        """Builds a record from plain values without pydantic where it can (``Lane``)."""
         self.problems: list[ConfigError] = []
         self.root: dict[str, str] = {}
         self.raw: dict[str, dict[str, Any]] = {}
@@ -179,7 +185,7 @@ class Merger:
                 elif tag == "Library":
                     library.append(self.rebase(library_from_xml(child), root))
                 elif tag == "MachineCodes":
-                    for declared in machine_codes_from_xml(child):
+                    for declared in machine_codes_from_xml(child, self.lane):
                         self.codes[declared.key()] = declared
                         if last:
                             self.own.codes.add(declared.key())
@@ -334,6 +340,10 @@ class Merger:
         return model if isinstance(model, cls) else None
 
     def validate(self, cls: type[Any], raw: dict[str, Any], name: str, key: tuple[str, ...]) -> Any:
+        if self.lane is not None:
+            made = self.lane(cls, raw)
+            if made is not None:
+                return made
         try:
             return validate(cls, raw)
         except Invalid as exc:
@@ -416,19 +426,19 @@ class Merger:
 
 
 def merge(roots: list[etree._Element], groups: dict[str, type["SetupGroup"]], source: str | None,
-          make: Callable[..., Any]) -> Any:
+          make: Callable[..., Any], lane: Lane | None = None) -> Any:
     """Roots (base first) -> one validated set-up, built by ``make``; every problem found is raised
     together."""
-    setup, problems = merge_collect(roots, groups, source, make)
+    setup, problems = merge_collect(roots, groups, source, make, lane)
     raise_all(problems)
     return setup
 
 
 def merge_collect(roots: list[etree._Element], groups: dict[str, type["SetupGroup"]], source: str | None,
-                  make: Callable[..., Any]) -> tuple[Any, list[ConfigError]]:
+                  make: Callable[..., Any], lane: Lane | None = None) -> tuple[Any, list[ConfigError]]:
     """Roots (base first) -> the set-up (a value with a problem left at its default) and the problems."""
     final_dir = Path(source).parent if source else None
-    merger = Merger(groups, final_dir)
+    merger = Merger(groups, final_dir, lane)
     for i, root in enumerate(roots):
         merger.read(root, i == len(roots) - 1)
     return merger.build(source, make), merger.problems

@@ -29,6 +29,7 @@ from .groups import (  # the records, named here as ever
 if TYPE_CHECKING:  # lxml is imported where XML is written; the machine's geometry where a set-up file has
     from lxml import etree  # some (postproc.setup.load)
     from .machine import AxisTravel, ToolData, WorkOffsetData
+    from .load import Lane
 
 __all__ = ["SetupGroup", "setting", "values"]  # the plugin API: a plugin's group is a SetupGroup
 
@@ -240,24 +241,25 @@ def check_named_file(path: str | Path) -> None:
 
 
 def load_setup(path: str | Path, factory: XFactory | None = None,
-               groups: dict[str, type[SetupGroup]] | None = None) -> MachineSetup:
+               groups: dict[str, type[SetupGroup]] | None = None, lane: Lane | None = None) -> MachineSetup:
     """Load and validate a machine set-up file and the bases it extends. ``groups``: the element name ->
     group class of every group (default: the built-in ones; pass ``default_registry().setup_groups`` for
-    those of the installed plugins too, as the command line does). Every problem found is raised (one
-    ``ConfigError``, or an ``ErrorList`` of them)."""
-    setup, problems = load_setup_collect(path, groups)
+    those of the installed plugins too, as the command line does); ``lane``: a shortcut past pydantic for
+    plain values (the command line passes ``postproc.fast.setup_values.plain_record``). Every problem found
+    is raised (one ``ConfigError``, or an ``ErrorList`` of them)."""
+    setup, problems = load_setup_collect(path, groups, lane)
     from .load import raise_all
     raise_all(problems)
     return setup
 
 
-def load_setup_collect(path: str | Path, groups: dict[str, type[SetupGroup]] | None = None
-                       ) -> tuple[MachineSetup, list[ConfigError]]:
+def load_setup_collect(path: str | Path, groups: dict[str, type[SetupGroup]] | None = None,
+                       lane: Lane | None = None) -> tuple[MachineSetup, list[ConfigError]]:
     """``load_setup`` that returns the problems (a value with a problem is left at its default) instead of
     raising them, so ``config check`` can go on to the templates; an unreadable file or chain raises."""
     from .load import merge_collect, resolve_chain
     if groups is None:
         groups = builtin_groups()  # the plugins' groups come from the registry, above this module
-    setup, problems = merge_collect(resolve_chain(path), groups, str(path), MachineSetup)
+    setup, problems = merge_collect(resolve_chain(path), groups, str(path), MachineSetup, lane)
     setup.source = str(path)
     return setup, problems

@@ -1,6 +1,6 @@
 """Validation of set-up records at the boundary where a set-up file is read: pydantic over the plain
-dataclasses of ``postproc.setup.record`` (imported only here, so a run without a set-up file never pays
-for it).
+dataclasses of ``postproc.setup.record`` (imported only here, when a record is first validated, so a run
+without a set-up file never pays for it, nor one whose values the set-up lane reads: ``postproc.fast.setup_values``).
 
 Messages are pydantic's (``Input should be less than or equal to 6``), except that an unknown attribute is
 an "unknown parameter" and the cross-field rules of a record's ``__post_init__`` stand alone.
@@ -8,9 +8,10 @@ an "unknown parameter" and the cross-field rules of a record's ``__post_init__``
 
 from __future__ import annotations
 
-from typing import Any, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar
 
-from pydantic import TypeAdapter, ValidationError
+if TYPE_CHECKING:
+    from pydantic import TypeAdapter
 
 R = TypeVar("R")
 
@@ -27,12 +28,13 @@ class Invalid(Exception):
 
 
 _ADAPTERS: dict[type[Any], TypeAdapter[Any]] = {}
-"""One adapter per record class (building one compiles its validator)."""
+"""One pydantic ``TypeAdapter`` per record class (building one compiles its validator)."""
 
 
 def _adapter(cls: type[Any]) -> TypeAdapter[Any]:
     found = _ADAPTERS.get(cls)
     if found is None:
+        from pydantic import TypeAdapter
         found = _ADAPTERS[cls] = TypeAdapter(cls)
     return found
 
@@ -40,6 +42,7 @@ def _adapter(cls: type[Any]) -> TypeAdapter[Any]:
 def validate(cls: type[R], raw: dict[str, Any]) -> R:
     """``cls`` built from ``raw`` (keys are XML names or field names; values as read), every value checked
     against the field's type and bounds. Raises ``Invalid`` with every problem found."""
+    from pydantic import ValidationError
     try:
         made: R = _adapter(cls).validate_python(raw)
         return made

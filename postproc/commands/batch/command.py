@@ -102,7 +102,8 @@ def _options(args: argparse.Namespace, renumber: tuple[int, int | None] | None) 
     machine = os.path.abspath(args.machine) if args.machine else None
     if machine is not None:
         check_named_file(args.machine)  # as the command line spelt it
-        load_setup(machine, groups=registry.setup_groups)  # a set-up error is the whole batch's (exit 1), found before any file
+        from ...fast.setup_values import plain_record
+        load_setup(machine, groups=registry.setup_groups, lane=plain_record)  # a set-up error is the whole batch's (exit 1), found before any file
     for folder in args.lib:
         if not os.path.isdir(folder):
             raise UsageError(f"--lib {folder}: no such directory")

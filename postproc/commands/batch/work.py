@@ -171,8 +171,9 @@ def _arcs(options: Options) -> ArcOption | None:
 @functools.lru_cache(maxsize=4)
 def _setup(options: Options) -> MachineSetup:
     """The set-up, loaded once per worker process (the client has already checked it loads)."""
-    setup = load_setup(options.machine, groups=default_registry().setup_groups) if options.machine \
-        else MachineSetup()
+    from ...fast.setup_values import plain_record  # the set-up lane, as the single-file command has it
+    setup = load_setup(options.machine, groups=default_registry().setup_groups, lane=plain_record) \
+        if options.machine else MachineSetup()
     setup.library.extend(options.lib)
     if options.normalize:  # as the single-file command does (its outputs and ours are the same bytes)
         setup.output.normalize = True
