@@ -47,6 +47,9 @@ On a lathe the same holds for X and Z together: a Fanuc T/GSK offset (``T0102``,
 ``G43 H02`` in ``postproc.cycles.lathe_lowering``) applies at the next move of any axis, LinuxCNC's where
 each axis is programmed, so the move gets both. ISG and Fagor targets get their D words from
 ``postproc.isg_family.tool_data`` after this step.
+
+One module of about 620 lines (a tenth of it this docstring): both directions follow the same program point
+(``_follow``, ``_Frame``) and the same reference-return rules, which a split would have to share back.
 """
 
 from __future__ import annotations
