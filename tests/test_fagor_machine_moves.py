@@ -43,9 +43,9 @@ def test_a_fagor_g53_is_read_only_as_an_absolute_move() -> None:
     assert _errors("G71 G90\nG53\nG00 X1\nM30\n", "fagor", "fanuc") == [
         "in.nc:2:1: error: G53 without an axis word: what it does on the 8070 (a zero offset deselection?) is "
         "not confirmed"]
-    assert _errors("G71 G91\nG53 G00 Z0\nM30\n", "fagor", "fanuc") == [
+    assert _errors("G71 G91\nG53 G00 Z0\nM30\n", "fagor", "fanuc")[0] == (  # (a Fanuc writes none either)
         "in.nc:2:1: error: G53 under G91: whether the 8070 takes its positions as increments is not confirmed "
-        "(write G90 in the block)"]
+        "(write G90 in the block)")
 
 
 def test_a_reference_return_with_an_intermediate_point_moves_there_first() -> None:
@@ -82,18 +82,24 @@ def programs(draw: st.DrawFn) -> str:
     """A Fanuc program of moves in work and machine coordinates, reference returns of Z and of X Y, G90/G91
     switches and cutting/exact-stop modes, with a tool length in force part of the time."""
     lines = ["G21 G90 G94", "G00 X0. Y0. Z10.", "F200."]
+    incremental = False  # a G53 under G91 is not known for a Fanuc [?] (refused by name): G90 goes beside it then
     for _ in range(draw(st.integers(1, 8))):
         kind = draw(st.sampled_from(["work", "machine", "home_z", "home_xy", "distance", "path", "length"]))
         if kind == "work":
             lines.append(f"{draw(MOVE)} X{draw(VALUE)} Z{draw(VALUE)}")
         elif kind == "machine":
-            lines.append(f"G53 {draw(MOVE)} Z{draw(VALUE)}" + (f" X{draw(VALUE)}" if draw(st.booleans()) else ""))
+            lines.append(("G90 " if incremental else "") + f"G53 {draw(MOVE)} Z{draw(VALUE)}"
+                         + (f" X{draw(VALUE)}" if draw(st.booleans()) else ""))
+            incremental = False
         elif kind == "home_z":
-            lines.append("G91 G28 Z0." if draw(st.booleans()) else f"G28 Z{draw(VALUE)}")
+            relative = draw(st.booleans())
+            lines.append("G91 G28 Z0." if relative else f"G28 Z{draw(VALUE)}")
+            incremental = incremental or relative
         elif kind == "home_xy":
             lines.append(f"G28 X{draw(VALUE)} Y{draw(VALUE)}")
         elif kind == "distance":
             lines.append(draw(st.sampled_from(["G90", "G91"])))
+            incremental = lines[-1] == "G91"
         elif kind == "path":
             lines.append(draw(st.sampled_from(["G64", "G61"])))
         else:

@@ -59,7 +59,11 @@ def test_machine_moves_and_reference_returns_keep_the_toolpath_to_isg_and_back(p
         assume("tool length change applies at the next move" not in str(err))
         raise
     _verify(program, out, "fanuc", "isg")
-    back = _translate(out, "isg", "fanuc")
+    try:
+        back = _translate(out, "isg", "fanuc")
+    except ErrorList as err:  # ISG's G53 under G91 has no Fanuc spelling known [?]: refused by name
+        assert "a move in machine coordinates under G91" in str(err), err
+        return
     _verify(program, back, "fanuc", "fanuc")
 
 
@@ -68,13 +72,12 @@ LENGTH_OFF = "G21 G90\nG00 X10. Y5. Z30.\nG43 H2 Z30.\nG91 G00 Z10.\nG53 G49 Z0.
 cancelled beside a move in machine coordinates."""
 
 
-def test_a_length_cancelled_beside_a_machine_move_under_g91_is_applied_by_that_move() -> None:
-    """The move in machine coordinates is to a position (the IR's; written after ``G90``), so the length change
-    beside it is applied there, as under G90: it was refused as left for a later absolute Z move. Hand-derived:
-    D0 (ISG selects no length), the machine move to machine Z0 after G90, G91 again for the incremental X1.;
-    the toolpath checked against the Fanuc source's simulation."""
-    out = _translate(LENGTH_OFF, "fanuc", "isg")
-    lines = out.splitlines()
-    assert lines[4:7] == ["D0", "G90 G00", "#SUPPRESS OFFSETS Z0."], out
-    assert lines[-2:] == ["G91 G00 X1.", "M30"], out
-    _verify(LENGTH_OFF, out, "fanuc", "isg")
+def test_a_length_cancelled_beside_a_machine_move_under_g91_is_refused_by_name() -> None:
+    """What a Fanuc or Haas does with G53's words under G91 is not known [?] (``WordBlockSyntax.
+    MACHINE_MOVE_INCREMENTAL``): the block is refused where it stands, not cut as a move to machine Z0."""
+    try:
+        _translate(LENGTH_OFF, "fanuc", "isg")
+    except ErrorList as err:
+        assert str(err.errors[0]).startswith("in.nc:5:1: error: G53 under G91"), err
+    else:
+        raise AssertionError("translated")

@@ -223,16 +223,19 @@ def test_grbl_comments_hold_no_realtime_character_and_only_ascii() -> None:
     assert _translate("G21 G0 X1.\n(OK)\n", "fanuc", "grbl")[1] == []
 
 
-@pytest.mark.parametrize("program, message", [
-    ("G41 D1\nG41 D1\n", 'cutter compensation left while compensation is on (rs274 needs G40 first: "Cannot turn '
-                          'cutter radius comp on when on")'),
-    ("G41 D1\nG28\n", 'G28/G30 with cutter compensation on (rs274: "Cannot use g28 or g30 with cutter radius comp")'),
-    ("G91\nG53 Y1.\n", 'a move in machine coordinates in incremental mode (rs274: "Cannot use g53 incremental")'),
+@pytest.mark.parametrize("source, program, message", [
+    ("fanuc", "G41 D1\nG41 D1\n", 'cutter compensation left while compensation is on (rs274 needs G40 first: '
+                                   '"Cannot turn cutter radius comp on when on")'),
+    ("fanuc", "G41 D1\nG28\n", 'G28/G30 with cutter compensation on (rs274: "Cannot use g28 or g30 with cutter radius '
+                                'comp")'),
+    ("grbl", "G91\nG53 Y1.\n", 'a move in machine coordinates in incremental mode (rs274: "Cannot use g53 '
+                                'incremental")'),
 ])
-def test_what_rs274_refuses_in_a_translation_is_a_located_error(program: str, message: str) -> None:
-    """Found by ``make fuzz`` with the controllers' rules: Fanuc runs these, rs274 refuses them."""
+def test_what_rs274_refuses_in_a_translation_is_a_located_error(source: str, program: str, message: str) -> None:
+    """Found by ``make fuzz`` with the controllers' rules: Fanuc (grbl: G53 under G91) runs these, rs274 refuses
+    them."""
     with pytest.raises(ErrorList) as info:
-        _translate("G21 G90 G0 X0 Y0 Z10.\n" + program + "M30\n", "fanuc", "linuxcnc")
+        _translate("G21 G90 G0 X0 Y0 Z10.\n" + program + "M30\n", source, "linuxcnc")
     assert [str(e) for e in info.value.errors] == [f"t.nc:3:1: error: the linuxcnc dialect cannot express {message}"]
     if available():
         ngc = program.replace("G53 Y1.", "G53 G0 Y1.")

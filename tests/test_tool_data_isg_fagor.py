@@ -273,10 +273,11 @@ def test_fanuc_g28_and_g53_become_fagor_g53_at_rapid_in_absolute_positions() -> 
 
 
 def test_fagor_g53_under_g91_is_written_absolute() -> None:
+    """From grbl, whose G53 words are machine positions under G91 too [V: gcode.c]."""
     text = "G21 G91\nG00 X1.\nG53 G00 Z-3.\nX1.\nM30\n"
-    out = _translate(text, "fanuc", "fagor")
+    out = _translate(text, "grbl", "fagor")
     assert out.splitlines()[2:4] == ["G53 G90 G00 Z-3.", "G91 G00 X1."]  # G91 again where it is next read
-    assert _verify(text, out, "fanuc", "fagor").ok
+    assert _verify(text, out, "grbl", "fagor").ok
 
 
 def test_fagor_reference_returns_it_cannot_place_are_located_errors() -> None:

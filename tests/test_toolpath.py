@@ -105,7 +105,7 @@ def test_an_axis_the_machine_lacks_is_a_located_error() -> None:
 
 
 def test_machine_coordinates_are_absolute_with_zero_work_offsets() -> None:
-    assert_events(body("G21 G90 G55\nG00 X10. Y10. Z10.\nG91 G53 Z50.\nX1."), [
+    assert_events(body("G21 G90 G55\nG00 X10. Y10. Z10.\nG53 Z50.\nG91 X1."), [
         {"line": 2, "move": "rapid", "x": 10, "y": 10, "z": 10},
         {"line": 3, "move": "rapid", "x": 10, "y": 10, "z": 50},
         {"line": 4, "move": "rapid", "x": 11, "y": 10, "z": 50},

@@ -56,6 +56,9 @@ class FagorBlockSyntax(WordBlockSyntax):
     TITLE: ClassVar[str] = "Fagor"
     CODES: ClassVar[CodeTable] = CODES
     POINTLESS_IN_UNITS: ClassVar[bool] = True
+    MACHINE_MOVE_INCREMENTAL: ClassVar[str] = "absolute"
+    """The family's G53-under-G91 rule steps aside: this reader refuses such a block itself, with the 8070's
+    own reason (``machine_move`` below)."""
     CYCLE_K_COUNTS: ClassVar[bool] = False
 
     def build(self, block: Block, ctx: Context) -> None:

@@ -21,6 +21,10 @@ class GrblFamilyBlockSyntax(NgcWordBlockSyntax):
     __slots__ = ()
     NO_M19: ClassVar[str] = "no oriented spindle stop; a set-up with <Cycles orientation=\"m19\"/> accepts it"
     """Why M19 is refused unless the set-up says the machine has it."""
+    MACHINE_MOVE_INCREMENTAL: ClassVar[str] = "absolute"
+    """G53 ignores the distance mode: its axis words are machine positions under G91 too [V: grbl 1.1 gcode.c,
+    step 20, "ignore if absolute override is active" (NON_MODAL_ABSOLUTE_OVERRIDE skips the G91 sum); grblHAL
+    gcode.c the same]."""
 
     def build(self, block: Block, ctx: Context) -> None:
         super().build(block, ctx)

@@ -21,7 +21,7 @@
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, ClassVar
 
 from mypy_extensions import mypyc_attr
 
@@ -34,6 +34,9 @@ from .dialect import GrblFamily
 @mypyc_attr(allow_interpreted_subclasses=True)
 class GrblFamilyWriter(WordWriter):
     """What grbl and grblHAL write alike (see the module docstring); each dialect's writer subclasses it."""
+
+    MACHINE_MOVE_INCREMENTAL_KNOWN: ClassVar[bool] = True
+    """G53's words are machine positions under G91 too [V: grbl 1.1 / grblHAL gcode.c]."""
 
     def tool_table(self) -> bool:
         """The target build under this set-up runs ``G43 H`` from its tool table."""

@@ -80,6 +80,14 @@ class WordBlockSyntax(Syntax):
     ``postproc.frames``)."""
     BASE_VARIANT: ClassVar[str] = ""
     """The variant whose machine codes every variant of the family has."""
+    MACHINE_MOVE_INCREMENTAL: ClassVar[str] = "verbatim"
+    """What the controller makes of a ``G53`` move's axis words under ``G91``: ``absolute`` (machine positions,
+    the distance mode ignored), ``error`` (it refuses the block), ``verbatim`` (not known: the block is kept as
+    ``NativeCode`` for this dialect and refused elsewhere by name; its writer refuses to write one). The family
+    differs where documented (9/Series ignores G53 and its words, Mitsubishi M700V moves by the increments,
+    Yaskawa iCube goes to the machine position, SINUMERIK's ISO mode and ISG take G53 in G90 only:
+    tests/heldout/corpus.toml, cadekiely_o78239_3x3_face_smile.nc, has the sources); no Fanuc or Haas text
+    was found [?]."""
     """Words a verbatim M code takes with it (M98 P.. L..)."""
     CYCLE_K_COUNTS: ClassVar[bool] = True
     """``K`` in a cycle block is a whole repeat count (Fanuc); False: a real number of the cycle's own
@@ -148,6 +156,8 @@ class WordBlockSyntax(Syntax):
         data_setting = natives == [DATA_KEY] and (bool(self.DATA_TABLES) or self.LATHE_OFFSET_INPUT)
         if natives and not data_setting:
             self._native(block, ctx, natives, raw)
+            return
+        if self._machine_move_kept(block, ctx, codes, raw, state.distance):
             return
         if machine_g:
             self._machine_g(block, ctx, machine_g, raw)
@@ -259,6 +269,27 @@ class WordBlockSyntax(Syntax):
             if up not in block.values:
                 block.values[up] = float(num) if "." in num else int(num)
 
+    def _machine_move_kept(self, block: Block, ctx: Context, codes: dict[str, tuple[str, str, object, str]],
+                           raw: dict[str, str], modal_distance: str) -> bool:
+        """A ``G53`` move under ``G91`` where the dialect's meaning is not known: kept verbatim (True); a
+        located error where the controller refuses it; False where its words are machine positions."""
+        if self.MACHINE_MOVE_INCREMENTAL == "absolute" or not any(c[1] == "machine" for c in codes.values()):
+            return False
+        if not any(up in AXIS_LETTERS for up in raw):
+            return False
+        mode = next((str(c[2]) for c in codes.values() if c[1] == "distance"), modal_distance)
+        if mode != "incremental":
+            return False
+        if self.MACHINE_MOVE_INCREMENTAL == "error":
+            raise ParseError("G53 in incremental mode (G91): the controller refuses it; program G90 in the block",
+                             ctx.at(block, col_of_word(block, "G", "53")))
+        block.add(NativeCode(self.DIALECT, "G53 under G91 (machine positions, increments or ignored: not known "
+                             "for this controller [?])", block.text or ""))
+        for up, num in raw.items():
+            if up not in block.values:
+                block.values[up] = float(num) if "." in num else int(num)
+        return True
+
     def _data_setting(self, block: Block, ctx: Context, codes: dict[str, Any], values: dict[str, Any],
                       used: set[str]) -> bool:
         """``G10 L2 P1 X.. Y..`` and the tool-offset forms -> ``DataSetting`` (``postproc.rs274.data_setting``);
@@ -359,11 +390,8 @@ class WordBlockSyntax(Syntax):
             return
         if "MachineCoordinates" in block.sections and axes:
             # G53 positions at rapid whatever the modal motion; a motion code beside it still sets the mode
-            # (ModalStateSyntax leaves the mode alone for machine-coordinate blocks). Its axis words are read as
-            # machine positions under G91 too [?: no Fanuc or Haas text found (issue 26, haasfacts); the family
-            # differs where documented: 9/Series ignores G53 and its axis words, Mitsubishi M700V moves by the
-            # increments, Yaskawa iCube goes to the machine position, SINUMERIK's ISO mode and ISG take G53 in
-            # G90 only; tests/heldout/corpus.toml, cadekiely_o78239_3x3_face_smile.nc, has the sources].
+            # (ModalStateSyntax leaves the mode alone for machine-coordinate blocks); under G91 its axis words
+            # are machine positions here (MACHINE_MOVE_INCREMENTAL, ``_machine_move_kept``).
             if motion_mode is not None:
                 state.motion = motion_mode
             block.add(Motion("rapid", {k: real(v) for k, v in axes.items()}))

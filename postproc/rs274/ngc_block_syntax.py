@@ -152,6 +152,8 @@ class NgcWordBlockSyntax(WordBlockSyntax):
         if natives and not data_setting:
             self._native(block, ctx, natives, raw)
             return
+        if self._machine_move_kept(block, ctx, codes, raw, ctx.state.distance):
+            return
         values = block.values
         real, integer, dialect = self.REAL_LETTERS, self.INTEGER_LETTERS, self.DIALECT  # a plugin's: read once
         if exprs:

@@ -181,6 +181,9 @@ class SectionWords(NumberWriter):
 
     MACHINE_MOVES: ClassVar[frozenset[str]] = frozenset(("rapid", "linear"))
     """Motion modes a block in machine coordinates may move in (RS274/NGC: G0 or G1 in force)."""
+    MACHINE_MOVE_INCREMENTAL_KNOWN: ClassVar[bool] = False
+    """What the controller does with a machine-coordinate move's words under G91 is known (grbl: machine
+    positions [V]); otherwise such a move is refused, as its own reader keeps it verbatim."""
 
     def machine_coordinates_words(self, s: Any, block: Block) -> list[str]:
         """Machine coordinates qualify the block's move; without one they do nothing, and RS274/NGC refuses
@@ -191,6 +194,12 @@ class SectionWords(NumberWriter):
         if getattr(motion, "mode", None) not in self.MACHINE_MOVES:
             self.unsupported(f"a {motion.mode} move in machine coordinates (its machine-coordinate code "  # type: ignore[attr-defined]
                              f"moves only {' or '.join(sorted(self.MACHINE_MOVES))})", block)
+        if not self.MACHINE_MOVE_INCREMENTAL_KNOWN:
+            distance = block.sections.get("DistanceMode")
+            mode = getattr(distance, "mode", None) or getattr(getattr(self, "modal", None), "distance", None)
+            if mode == "incremental":
+                self.unsupported("a move in machine coordinates under G91 (what the controller makes of its words "
+                                 "there is not known [?]: program G90 in the block)", block)
         return self._code("machine", None, "motion in machine coordinates", block)
 
     def cycle_cancel_words(self, s: Any, block: Block) -> list[str]:

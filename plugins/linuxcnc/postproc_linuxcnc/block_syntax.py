@@ -48,6 +48,9 @@ class NgcBlockSyntax(NgcWordBlockSyntax):
     CODES: ClassVar[CodeTable] = CODES
     N_FIRST: ClassVar[bool] = True
     FEED_MODE_RESETS_FEED: ClassVar[bool] = True
+    MACHINE_MOVE_INCREMENTAL: ClassVar[str] = "error"
+    """rs274 refuses G53 under G91: "Cannot use g53 incremental" [V: interp_check.cc, rs274 2.9.0~pre1 run
+    here]."""
     CUTTER_TAKES_LOADED_TOOL: ClassVar[bool] = True
     """[K: LinuxCNC G-code reference, G41/G42: "if there is no D word, the radius of the currently loaded
     tool is used"; V: rs274, T1 M6 then G41 offsets by tool 1's radius]."""
