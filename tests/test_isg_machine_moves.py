@@ -62,7 +62,7 @@ def test_machine_moves_and_reference_returns_keep_the_toolpath_to_isg_and_back(p
     try:
         back = _translate(out, "isg", "fanuc")
     except ErrorList as err:  # ISG's G53 under G91 has no Fanuc spelling known [?]: refused by name
-        assert "a move in machine coordinates under G91" in str(err), err
+        assert "a move in machine coordinates in incremental distance mode" in str(err), err
         return
     _verify(program, back, "fanuc", "fanuc")
 
@@ -78,6 +78,15 @@ def test_a_length_cancelled_beside_a_machine_move_under_g91_is_refused_by_name()
     try:
         _translate(LENGTH_OFF, "fanuc", "isg")
     except ErrorList as err:
-        assert str(err.errors[0]).startswith("in.nc:5:1: error: G53 under G91"), err
+        assert str(err.errors[0]).startswith("in.nc:5:1: error: G53 in incremental distance mode"), err
     else:
         raise AssertionError("translated")
+
+
+def test_a_g90_in_the_machine_move_block_stays_in_force_after_it() -> None:
+    """Fanuc's G90 beside G53 is modal: the next Z20. is absolute (work Z20). ISG once wrote G91 again after the
+    #SUPPRESS OFFSETS line, so that Z20. moved 20 up from machine Z0 (verify found 25.5 mm with a tool length)."""
+    text = "G21 G90 G94\nG00 X0. Y0. Z10.\nG91\nG00 X1.\nG90 G53 G00 Z0.\nG00 Z20.\nM30\n"
+    out = _translate(text, "fanuc", "isg")
+    assert out.splitlines()[4:7] == ["G90 G00", "#SUPPRESS OFFSETS Z0.", "G00 Z20."], out
+    _verify(text, out, "fanuc", "isg")

@@ -182,7 +182,7 @@ class IsgWriter(WordWriter):
             self.carry.pop(axis, None)
         if words:  # a return naming no axis moves none (Fanuc G28 alone): nothing to write for it
             text += (" ".join(modes) + "\n" if modes else "") + "#SUPPRESS OFFSETS " + " ".join(words) + "\n"
-            if incremental:
+            if incremental and not say_absolute:  # (a G90 of the block's own stays in force, as in the source)
                 text += self.code("distance", "incremental", "incremental distance mode", block) + "\n"
         text += self._part(block, after)
         if not text.endswith(block.eol or "\n"):

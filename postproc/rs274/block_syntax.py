@@ -280,11 +280,12 @@ class WordBlockSyntax(Syntax):
         mode = next((str(c[2]) for c in codes.values() if c[1] == "distance"), modal_distance)
         if mode != "incremental":
             return False
+        num = next(c[3] for c in codes.values() if c[1] == "machine")
         if self.MACHINE_MOVE_INCREMENTAL == "error":
-            raise ParseError("G53 in incremental mode (G91): the controller refuses it; program G90 in the block",
-                             ctx.at(block, col_of_word(block, "G", "53")))
-        block.add(NativeCode(self.DIALECT, "G53 under G91 (machine positions, increments or ignored: not known "
-                             "for this controller [?])", block.text or ""))
+            raise ParseError(f"G{num} in incremental distance mode: the controller refuses it (program absolute "
+                             "distance in the block)", ctx.at(block, col_of_word(block, "G", num)))
+        block.add(NativeCode(self.DIALECT, f"G{num} in incremental distance mode (machine positions, increments or "
+                             "ignored: not known for this controller [?])", block.text or ""))
         for up, num in raw.items():
             if up not in block.values:
                 block.values[up] = float(num) if "." in num else int(num)

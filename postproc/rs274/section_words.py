@@ -198,8 +198,9 @@ class SectionWords(NumberWriter):
             distance = block.sections.get("DistanceMode")
             mode = getattr(distance, "mode", None) or getattr(getattr(self, "modal", None), "distance", None)
             if mode == "incremental":
-                self.unsupported("a move in machine coordinates under G91 (what the controller makes of its words "
-                                 "there is not known [?]: program G90 in the block)", block)
+                self.unsupported("a move in machine coordinates in incremental distance mode (what the controller "
+                                 "makes of its words there is not known [?]: program absolute distance in the block)",
+                                 block)
         return self._code("machine", None, "motion in machine coordinates", block)
 
     def cycle_cancel_words(self, s: Any, block: Block) -> list[str]:
