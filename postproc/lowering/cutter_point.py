@@ -10,7 +10,7 @@ are ``cutter_moves``'s; the blocks and the steps are ``cutter_resolver``'s and `
 
 from __future__ import annotations
 
-from typing import Callable, Final
+from typing import Callable, Final, Mapping
 
 from mypy_extensions import mypyc_attr
 
@@ -22,6 +22,9 @@ from ..compensation.cutter_radius import Item
 from ..compensation.geometry_for import cutter_for
 from ..compensation.rules import CutterRules
 from ..compensation.tool_table import ToolTable
+from ..cycles.section import CannedCycle
+from ..interp.control import LABEL
+from .point_after import RETURNS, compound_end, cycle_end, loses_after, unknown_axes
 from .rule_trial import RuleTrial
 
 MM_PER_INCH = 25.4
@@ -201,51 +204,69 @@ class ProgrammedPoint:
         return target
 
     def _track(self, block: Block) -> None:
-        """The programmed point after a block run with no compensation on."""
+        """The programmed point after a block run with no compensation on (the blocks other than a plain move:
+        ``point_after``)."""
         sections = block.sections
         motion = sections.get("Motion")
         compound = sections.get("CompoundMotion")
-        if isinstance(compound, CompoundMotion) and "MachineCoordinates" not in sections:
+        cycle = sections.get("CannedCycle")
+        if LABEL in sections:
+            self._lose()  # a jump's target: reached from elsewhere too (its own move is followed below)
+        if isinstance(cycle, CannedCycle) and not isinstance(compound, CompoundMotion):
+            self._track_cycle(cycle)  # a hole cycle kept native, or a repeat of it
+        elif isinstance(compound, CompoundMotion) and "MachineCoordinates" not in sections:
             self._track_compound(compound)
-        elif "CompoundMotion" in sections or "MachineCoordinates" in sections:
-            self.pos = {axis: None for axis in self.pos}
+        elif compound is not None:
+            self._lose()
         elif isinstance(motion, Motion) and motion.axes:
-            if motion.mode in ("home", "home2"):
-                self.pos = {axis: None for axis in self.pos}
-                return
-            try:
-                self.pos = {axis: value for axis, value in self._target(motion).items()}
-            except UnsupportedError:
-                self.pos = {axis: None for axis in self.pos}
+            if motion.mode in RETURNS or "MachineCoordinates" in sections:
+                for axis in unknown_axes(motion):  # a machine position: not known in work coordinates
+                    if axis in self.pos:
+                        self.pos[axis] = None
+                        self.floating.discard(axis)
+            else:
+                try:
+                    self.pos = {axis: value for axis, value in self._target(motion).items()}
+                except UnsupportedError:
+                    self.pos = {axis: None for axis in self.pos}
+        if loses_after(sections):
+            self._lose()
         u, v = self._in_plane(self.pos)
         if u is not None and v is not None:
             self.at = (u, v)
 
+    def _lose(self) -> None:
+        """The point is not known after this block (``point_after``)."""
+        self.pos = {axis: None for axis in self.pos}
+
+    def _track_cycle(self, cycle: CannedCycle) -> None:
+        """Where a hole cycle the target keeps native leaves the tool (``point_after.cycle_end``): its last hole,
+        at the level the cycle returns to."""
+        end = cycle_end(cycle)
+        if end is None:
+            self._lose()
+            return
+        self._land(end)
+
     def _track_compound(self, compound: CompoundMotion) -> None:
         """Where an expanded cycle (a lathe roughing cycle, before a G42 for its finishing cycle) leaves the
-        tool: its moves are absolute (``CompoundMotion``); anything else makes the point unknown. Every
-        expanded hole of a translation that resolves compensation passes here, so the moves are followed
-        in one dictionary, with ``_target``'s checks of each word (a dictionary a move through ``_target``
-        cost the cycles bench 36k instructions a hole). A refused absolute word of a floating axis
-        leaves the point where the expansion started: the translation has failed, nothing reads it."""
-        pos = dict(self.pos)
+        tool: its moves are absolute (``point_after.compound_end``); a computed word leaves its axis unknown,
+        a move other than G0-G3 the whole point. Every axis it moves is absolute: a floating axis lands."""
+        moved = compound_end(compound)
+        if moved is None:
+            self._lose()
+            return
+        self._land(moved)
+
+    def _land(self, end: Mapping[str, float | None]) -> None:
+        """Axes brought to absolute numbers in program units (None: not known) by a block run with no
+        compensation on (an expanded or native cycle); an axis not followed here is left alone."""
+        pos = self.pos
         scale = self.scale
         x_scale = scale * 0.5 if self.diameters else scale
         floating = self.floating
-        for item in compound.items:
-            if not isinstance(item, Motion):
-                continue
-            if item.mode not in MOVES:
-                pos = {axis: None for axis in pos}
-                continue
-            for axis, value in item.axes.items():
-                if isinstance(value, Expr) or axis not in pos:  # _target's refusals: the point is not known
-                    self.pos = {axis: None for axis in self.pos}
-                    return
-                if floating and axis in floating:
-                    if not self._idle():
-                        raise ProgramError(f"an absolute {axis} in a compensated stretch of a program that moved "
-                                           "by increments from an unknown start point")
+        for axis, value in end.items():
+            if axis in pos:
+                pos[axis] = None if value is None else value * (x_scale if axis == "X" else scale)
+                if floating:
                     floating.discard(axis)
-                pos[axis] = value * (x_scale if axis == "X" else scale)
-        self.pos = pos

@@ -25,6 +25,7 @@ from ..compensation.rules import CutterRules
 from ..ir.state import PLANE_AXES
 from .cutter_moves import CompensatedMoves
 from .cutter_point import MM_PER_INCH, MOVES, Unresolvable, UnknownHere
+from .point_after import FOLLOWED
 from .rule_trial import STAND_IN_RADIUS, STRETCH_LIMIT, RuleTrial
 from .lower import BlockStep, run_blocks
 
@@ -36,8 +37,9 @@ _MODAL: Final = frozenset(("Units", "DistanceMode", "Plane", "DataSetting", "Wor
 only a move to track, or passes untouched)."""
 _NOT_PLAIN: Final = _MODAL | {"CutterCompensation", "DynamicCutterCompensation", "CoordinateSet"}
 """A block with one of these goes the general way even while no compensation is on (``Resolver.block``)."""
-_NOT_TRACKED: Final = frozenset(("MachineCoordinates", "CompoundMotion"))
-"""A block with one of these is not a plain move to track (``ProgrammedPoint._track`` says where it leaves the tool)."""
+_NOT_TRACKED: Final = FOLLOWED
+"""A block with one of these is not a plain move to note (``ProgrammedPoint._track`` says where it leaves the tool,
+``point_after``: a cycle kept native, a machine move, a control statement...)."""
 _NOT_NOTED: Final = _NOT_PLAIN | _NOT_TRACKED
 """A block with none of these is at most a move to note (one set look-up a key for the common block)."""
 _UNCHECKED: Final = (Unresolvable, UnknownHere)

@@ -62,18 +62,21 @@ from ..context import Context
 from ..dialect import Dialect
 from ..errors import Location, PostprocError, UnsupportedError
 from ..ir.expr import Binary, Expr, Num, Var
-from ..ir import (Block, CutterCompensation, DataSetting, DistanceMode, Motion, Section, ToolLengthOffset, Units,
-                  WorkOffset)
+from ..ir import (Block, CompoundMotion, CutterCompensation, DataSetting, DistanceMode, Motion, Section,
+                  ToolLengthOffset, Units, WorkOffset)
 from ..ir.keys import watches_none
 from ..compensation.tool_table import ToolTable
 from ..setup.machine_setup import MachineSetup
 from ..setup.work_offsets import declared_offsets, offset_beyond_frame
+from ..cycles.section import CannedCycle
+from ..interp.control import LABEL
 from .lower import BlockStep, LoweringStep
+from .point_after import FOLLOWED, compound_end, cycle_end, loses_after
 
 AXIS: Final = "Z"
 MM_PER_INCH: Final = 25.4
 _WATCHED: Final = frozenset(("ToolLengthOffset", "Motion", "CompoundMotion", "CycleCall", "DistanceMode", "Units",
-                             "WorkOffset", "CoordinateSet", "DataSetting", "CutterCompensation", "RigidTap"))
+                             "WorkOffset", "CoordinateSet", "DataSetting", "CutterCompensation", "RigidTap")) | FOLLOWED
 _PLAIN: Final = frozenset(("rapid", "linear", "cw", "ccw"))
 _STRAIGHT: Final = frozenset(("rapid", "linear"))
 """The modes whose block moves nothing without an axis word (an arc without one is a full circle)."""
@@ -188,8 +191,9 @@ class _Defer(BlockStep):
 
 
 def _clash(sections: dict[str, Section]) -> str | None:
-    """What a waiting change cannot be carried past."""
-    if "CompoundMotion" in sections or "CycleCall" in sections or "RigidTap" in sections:
+    """What a waiting change cannot be carried past (a cycle kept native too: its first move applies the change
+    on one controller and its first Z level on the other)."""
+    if "CompoundMotion" in sections or "CycleCall" in sections or "RigidTap" in sections or _native_cycle(sections):
         return "a canned cycle"
     if "DataSetting" in sections:
         return "a data setting"
@@ -199,7 +203,7 @@ def _clash(sections: dict[str, Section]) -> str | None:
 
 
 _UNPLACING: Final = frozenset(("WorkOffset", "CoordinateSet", "FrameChange", "CompoundMotion", "CycleCall",
-                                "RigidTap", "MachineCoordinates", "DataSetting"))
+                                "RigidTap", "MachineCoordinates", "DataSetting", "CannedCycle", "LatheCycle"))
 """What leaves the program's point on an axis other than where the start put it, on the target as on the
 source, without a number here: after it a position read is not written (the simulation's start no longer
 stands for it, ``postproc.frames.parameters``)."""
@@ -443,12 +447,17 @@ def _moves(sections: dict[str, Section]) -> bool:
     (``G00 T101``, a lathe program's usual tool line) only sets the modal motion and moves nothing [K: a block
     moves only the axes it names; ``postproc.simulate.simulator`` makes no move of it either], so a change in
     it still waits for the next move."""
-    if "CompoundMotion" in sections or "RigidTap" in sections:
+    if "CompoundMotion" in sections or "RigidTap" in sections or _native_cycle(sections):
         return True
     motion = sections.get("Motion")
     if not isinstance(motion, Motion):
         return False
     return bool(motion.axes) or motion.mode not in _STRAIGHT
+
+
+def _native_cycle(sections: dict[str, Section]) -> bool:
+    """A hole or lathe cycle the target keeps (its ``CompoundMotion`` dropped by the cycle steps): it moves."""
+    return ("CannedCycle" in sections or "LatheCycle" in sections) and "CompoundMotion" not in sections
 
 
 def _returns_through(block: Block, absolute: bool, axes: tuple[str, ...]) -> bool:
@@ -523,9 +532,27 @@ def _follow(block: Block, pos: dict[str, float | None], absolute: bool, in_force
     machine-coordinate Z is the programmed Z plus the work offset in force (``beyond``, ``_Frame``) plus the
     mill's length in force (``in_force`` read in ``table``; None on a lathe: not followed)."""
     sections = block.sections
-    if "CompoundMotion" in sections or "RigidTap" in sections or "CycleCall" in sections:
+    if LABEL in sections:
         for axis in pos:
-            pos[axis] = None  # a cycle ends at its return level: not followed here
+            pos[axis] = None  # a jump's target: reached from elsewhere too (``point_after``)
+    cycle = sections.get("CannedCycle")
+    if isinstance(cycle, CannedCycle) and "CompoundMotion" not in sections:
+        end = cycle_end(cycle)  # a hole cycle kept native ends over its last hole at its return level
+        for axis in pos:
+            pos[axis] = None if end is None else end.get(axis)
+        return
+    compound = sections.get("CompoundMotion")
+    if isinstance(compound, CompoundMotion) and "MachineCoordinates" not in sections and not loses_after(sections):
+        moved = compound_end(compound)  # an expanded cycle: its moves are absolute
+        for axis in pos:
+            if moved is None:
+                pos[axis] = None
+            elif axis in moved:
+                pos[axis] = moved[axis]
+        return
+    if compound is not None or "RigidTap" in sections or "CycleCall" in sections or loses_after(sections):
+        for axis in pos:
+            pos[axis] = None  # a native lathe cycle's end, a call's, a modal cycle call's: not followed here
         return
     motion = sections.get("Motion")
     if not isinstance(motion, Motion):

@@ -1,0 +1,88 @@
+"""Where a block that is no plain move leaves the programmed point: one answer for the lowering steps that
+follow the point (the cutter compensation resolver, ``cutter_point``; the tool length timing, ``length_timing``).
+
+A plain move (G0-G3) is each step's own business, on its fast path. The other blocks that move the tool:
+
+* a hole cycle the target keeps native (a ``CannedCycle`` whose ``CompoundMotion`` ``expand_canned_cycles``
+  dropped: the call ``G81 X10. Y2. ...`` and each repeat ``X20.`` after it): it ends over its last hole at the
+  level the cycle alone sets, ``CycleExpansion.end`` of the family expansion, which is what the reader moved
+  its own point by (``CannedCycleResolveSyntax.install``). Issue 26: the resolver did not follow it, and a
+  grblHAL start-up after a native ``G81 ... Y2.`` was computed from Y0 (2 mm wrong, exit 0);
+* an expanded cycle (``CompoundMotion``): its moves, absolute in program units (each step walks them);
+* a reference return (G28/G30) or a move in machine coordinates (G53): each axis it names ends at a machine
+  position, not known here in work coordinates (``unknown_axes``); the axes it does not name stay;
+* a lathe cycle kept native, and anything after which the program's text order is not its run order (a call,
+  a jump, a loop: ``postproc.interp.control``): not known (``loses_after``); a jump's label: not known before
+  its block.
+
+Not known means a located error where a later step needs the point (a compensated start-up, a length change's
+Z), never a guess.
+"""
+
+from __future__ import annotations
+
+from typing import Final
+
+from ..cycles.expansion import CycleExpansion
+from ..cycles.resolve import EXPANSIONS
+from ..cycles.section import CannedCycle
+from ..errors import PostprocError
+from ..interp.control import CONTROL, LABEL
+from ..ir import CompoundMotion, Motion, Section
+from ..ir.expr import Expr
+
+MOVES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
+RETURNS: Final = frozenset(("home", "home2"))
+"""Reference returns (G28, G30): through an intermediate point to a machine position."""
+FOLLOWED: Final = frozenset(("CannedCycle", "LatheCycle", "MachineCoordinates", "CompoundMotion", CONTROL, LABEL))
+"""Sections of a block that moves the tool other than as a plain move, or before or after which the point is
+lost (``loses_after``, a ``LABEL``): a step that keeps a fast path for plain moves sends these blocks the
+general way."""
+
+_BY_KIND: Final[dict[str, CycleExpansion]] = {kind: expansion() for expansion in EXPANSIONS for kind in expansion.KINDS}
+"""Hole cycle kind -> the family expansion that knows where it ends. A family's own expansion (grblHAL's pecks,
+``postproc_grblhal.pecking``) moves differently in the hole and ends as the built-in one: over its last hole at
+the return level (``CycleExpansion.ENDS_OVER_THE_SPOT``)."""
+
+
+def cycle_end(cycle: CannedCycle) -> dict[str, float] | None:
+    """Where a hole cycle block leaves the tool, absolute, program units: the plane's axes and the drilling
+    axis (a block of no hole, K0, where it stood: the axes known before it); None where not known (a kind no
+    family expands, a level or position the record lacks: the reader refused those already)."""
+    expansion = _BY_KIND.get(cycle.kind)
+    if expansion is None:
+        return None
+    try:
+        return expansion.end(cycle)
+    except PostprocError:
+        return None
+
+
+def compound_end(compound: CompoundMotion) -> dict[str, float | None] | None:
+    """Where an expanded construct's moves (a cycle's: absolute, program units) leave the axes they move: each
+    at its last move's number (None: computed); an axis they do not move stays where it was. None where the
+    point is not known at all after them (a move other than G0-G3 among them). One dictionary for the whole
+    block: every expanded hole of a translation that follows the point passes here."""
+    moved: dict[str, float | None] = {}
+    for item in compound.items:
+        if not isinstance(item, Motion):
+            continue
+        if item.mode not in MOVES:
+            return None
+        for axis, value in item.axes.items():
+            moved[axis] = None if isinstance(value, Expr) else value
+    return moved
+
+
+def unknown_axes(motion: Motion) -> tuple[str, ...]:
+    """The axes a reference return or a move in machine coordinates leaves at a point not known in work
+    coordinates: those it names (a G28 without axis words moves none [K: the simulation makes no move of it])."""
+    return tuple(motion.axes)
+
+
+def loses_after(sections: dict[str, Section]) -> bool:
+    """After this block the programmed point is not known here: a control statement (a call, a jump, a loop:
+    what runs next is not the next block of the text), or a lathe cycle the target keeps native (no
+    ``CompoundMotion``: where it ends is its controller's rules, not followed here). (A jump's label, ``LABEL``,
+    loses the point *before* its block: the block's own move is followed.)"""
+    return CONTROL in sections or ("LatheCycle" in sections and "CompoundMotion" not in sections)
