@@ -108,6 +108,17 @@ def test_a_length_change_waiting_over_a_native_cycle_is_refused() -> None:
         messages
 
 
+def test_an_arc_after_a_native_cycle_is_settled_from_its_last_hole() -> None:
+    """grblHAL refuses an R arc whose chord the writer's and its own rounding may put over 2R, so the settle pass
+    writes such an arc by I/J (``Dialect.R_ARC_FLOAT_SLACK``), which needs its start. Hand-derived: the G81
+    leaves the tool over (10, 2); ``G2 X10. Y22. R10.`` is a half circle about the chord's midpoint (10, 12):
+    I0 J10. The pass did not follow the native cycle and wrote the R arc as it was."""
+    text = "G21 G90 G17 G0 X0 Y0 Z10.\nG81 X10. Y2. Z-2.5 R2. F250.\nG80\nG1 Z0. F100.\nG2 X10. Y22. R10.\nM30\n"
+    out = _translate(text, "grblhal")
+    assert "G81 X10. Y2." in out and "G2 X10. Y22. I0. J10." in out, out
+    _verify(text, out, "fanuc", "grblhal")
+
+
 # -- the differential --------------------------------------------------------------------------------------
 CYCLES = {"G73": "Q1.", "G74": "", "G81": "", "G82": "P300", "G83": "Q1.5", "G84": "", "G85": "", "G86": "",
           "G88": "P300", "G89": "P300"}

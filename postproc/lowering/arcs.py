@@ -43,6 +43,8 @@ from ..numbers import EXACT
 from ..ir.state import MM_PER_INCH, PLANE_AXES, ModalState, changes_nothing
 from .lower import BlockStep, LoweringStep, run_blocks
 from .arc_geometry import Arc, chord_points, r_centre_error, r_pieces, signed_radius, split
+from .point_after import cycle_end
+from ..cycles.section import CannedCycle
 
 FORMS: Final = ("lines", "ijk", "r")
 SETTLE: Final = "settle"
@@ -219,6 +221,9 @@ class _Rewriter:
             self._compound(block, compound)
         if rare and ("CannedCycle" in sections or "LatheCycle" in sections and compound is None):
             self.unknown()  # a native cycle ends where its controller's rules say
+            cycle = sections.get("CannedCycle")
+            if isinstance(cycle, CannedCycle):  # a hole cycle: over its last hole at its return level
+                self.state.position.update(cycle_end(cycle) or {})
         return out
 
     def _settings(self, sections: dict[str, Section]) -> None:

@@ -27,7 +27,7 @@ from ..cycles.expansion import CycleExpansion
 from ..cycles.resolve import EXPANSIONS
 from ..cycles.section import CannedCycle
 from ..errors import PostprocError
-from ..interp.control import CONTROL, LABEL
+from ..interp.control import CONTROL, LABEL, IfThen
 from ..ir import CompoundMotion, Motion, Section
 from ..ir.expr import Expr
 
@@ -85,4 +85,7 @@ def loses_after(sections: dict[str, Section]) -> bool:
     what runs next is not the next block of the text), or a lathe cycle the target keeps native (no
     ``CompoundMotion``: where it ends is its controller's rules, not followed here). (A jump's label, ``LABEL``,
     loses the point *before* its block: the block's own move is followed.)"""
-    return CONTROL in sections or ("LatheCycle" in sections and "CompoundMotion" not in sections)
+    control = sections.get(CONTROL)
+    if control is not None and not isinstance(control, IfThen):  # (Fanuc's IF [..] THEN #1=..: an assignment)
+        return True
+    return "LatheCycle" in sections and "CompoundMotion" not in sections
