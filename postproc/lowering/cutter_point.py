@@ -212,8 +212,8 @@ class ProgrammedPoint:
         cycle = sections.get("CannedCycle")
         if LABEL in sections:
             self._lose()  # a jump's target: reached from elsewhere too (its own move is followed below)
-        if isinstance(cycle, CannedCycle) and not isinstance(compound, CompoundMotion):
-            self._track_cycle(cycle)  # a hole cycle kept native, or a repeat of it
+        if isinstance(cycle, CannedCycle) and "MachineCoordinates" not in sections:
+            self._track_cycle(cycle)  # a hole cycle (or a repeat of it): kept native, or its expansion not made yet
         elif isinstance(compound, CompoundMotion) and "MachineCoordinates" not in sections:
             self._track_compound(compound)
         elif compound is not None:
