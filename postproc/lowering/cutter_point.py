@@ -4,7 +4,9 @@ resolution, and the programmed point it follows through the blocks run without c
 The common block (a plain absolute move while no compensation is on) only notes its X, Y and Z as numbers
 (``ProgrammedPoint._note``); they are brought into the point (``_settle``) before anything reads it. A move by
 increments from an unknown start point makes its axis count from zero in a frame of its own (``floating``: see
-``cutter_compensation``'s docstring). The moves of the compensated stretch and what the compensation releases
+``cutter_compensation``'s docstring). Where the other blocks leave the point (a hole cycle kept native or
+expanded, a reference return, a move in machine coordinates, a control statement) is ``point_after``'s answer,
+shared with the tool length timing; where it is not known, a compensated start-up from there is a located error. The moves of the compensated stretch and what the compensation releases
 are ``cutter_moves``'s; the blocks and the steps are ``cutter_resolver``'s and ``cutter_compensation``'s.
 """
 
