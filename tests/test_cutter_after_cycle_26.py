@@ -119,6 +119,19 @@ def test_an_arc_after_a_native_cycle_is_settled_from_its_last_hole() -> None:
     _verify(text, out, "fanuc", "grblhal")
 
 
+@pytest.mark.parametrize("target", ["grblhal", "grbl"])
+def test_a_length_change_beside_a_cycle_is_refused_whether_kept_or_expanded(target: str) -> None:
+    """Fanuc applies ``G43 H1`` beside ``G81`` at the cycle's first move (its positioning at the initial level),
+    grbl and grblHAL where Z is next programmed (the R level): the machine's Z differs during the positioning,
+    so the change is a located error at its block for both; grblHAL, which keeps the G81, had the change carried
+    to the move after the cycle (100 mm off during it, exit 0)."""
+    text = "G21 G90 G17 G0 X0 Y0 Z50.\nG43 H1 G81 X10. Y2. Z-2.5 R2. F250.\nG80\nG1 X20. F100.\nM30\n"
+    with pytest.raises(ErrorList) as info:
+        _translate(text, target)
+    messages = [str(e) for e in info.value.errors]
+    assert len(messages) == 1 and messages[0].startswith("t.nc:2:") and "tool length change" in messages[0], messages
+
+
 # -- the differential --------------------------------------------------------------------------------------
 CYCLES = {"G73": "Q1.", "G74": "", "G81": "", "G82": "P300", "G83": "Q1.5", "G84": "", "G85": "", "G86": "",
           "G88": "P300", "G89": "P300"}
