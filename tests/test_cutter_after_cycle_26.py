@@ -138,9 +138,10 @@ CYCLES = {"G73": "Q1.", "G74": "", "G81": "", "G82": "P300", "G83": "Q1.5", "G84
 """Fanuc's hole cycles and the words each needs besides the hole and its levels. Not G76/G87: they need an
 oriented spindle stop, which grbl has not (an operator's stop, ``<Cycles orientation="stop">``, is another
 structure to ``verify``)."""
-BETWEEN = {"": "", "G28 Z20.": "", "G91 G28 Z0.\nG90": "", "G53 Z0.": "", "G28 X0. Y0.": "XY", "G53 X0. Y0.": "XY"}
-"""A block between the cycle and the compensation, and the plane axes it leaves at a machine position (not
-known in work coordinates: the start-up from there is a located error)."""
+BETWEEN = {"": "", "G28 Z20.": "Z", "G91 G28 Z0.\nG90": "Z", "G53 Z0.": "Z", "G28 X0. Y0.": "XY", "G53 X0. Y0.": "XY"}
+"""A block between the cycle and what follows, and the axes it leaves at a machine position (not known in work
+coordinates: a start-up from there, or a length change's Z, is a located error)."""
+LENGTH_LOST = "the programmed Z is not known where it applies"
 ENTRY_X = 60.0
 
 
@@ -156,11 +157,15 @@ class Drawn:
     corner: tuple[float, float]
     """Where it ends, by hand (type A): beside the next move's start, square to it."""
     lost: bool
-    """The block between leaves X and Y at a machine position."""
+    """The block between leaves X and Y at a machine position (for a length change: Z)."""
+    level: float
+    """Where the cycle left Z, by hand: the initial level (G98) or R (G99)."""
 
 
 @st.composite
-def programs(draw: st.DrawFn) -> Drawn:
+def programs(draw: st.DrawFn, tail: str = "compensation") -> Drawn:
+    """A cycle, perhaps a block between, then a compensated stretch (or a tool length change alone and a move:
+    ``tail="length"``)."""
     code = draw(st.one_of(st.sampled_from(["G81", "G82"]), st.sampled_from(sorted(CYCLES))))  # half: grblHAL's own
     incremental = draw(st.booleans())
     initial = draw(_coordinate(5, 15))
@@ -193,6 +198,10 @@ def programs(draw: st.DrawFn) -> Drawn:
     between = draw(st.sampled_from(sorted(BETWEEN)))
     if between:
         lines.append(between)
+    level = initial if mode == "G98" else r
+    if tail == "length":
+        lines += ["G43 H1", f"G1 X{_number(ENTRY_X)} F100.", "M30"]
+        return Drawn("\n".join(lines) + "\n", here, (ENTRY_X, here[1]), BETWEEN[between] == "Z", level)
     side, register = draw(st.sampled_from(["G41", "G42"])), draw(st.sampled_from([1, 2]))
     named_y = draw(st.booleans())
     entry_y = draw(_coordinate(-10, 10)) if named_y else here[1]
@@ -200,7 +209,7 @@ def programs(draw: st.DrawFn) -> Drawn:
     lines += [f"Y{_number(entry_y + 30)}", "X80.", f"G40 G0 X100. Y{_number(entry_y + 50)}", "M30"]
     radius = RADII[register]
     corner = (ENTRY_X + radius if side == "G42" else ENTRY_X - radius, entry_y)  # beside the +Y move's start
-    return Drawn("\n".join(lines) + "\n", here, corner, BETWEEN[between] == "XY")
+    return Drawn("\n".join(lines) + "\n", here, corner, BETWEEN[between] == "XY", level)
 
 
 @settings(max_examples=60, deadline=None)
@@ -231,6 +240,27 @@ def test_native_and_expanded_cycles_leave_the_same_start_up(drawn: Drawn) -> Non
         _verify(text, outputs[target], "fanuc", target)
     _verify(text, outputs["linuxcnc"], "fanuc", "linuxcnc")
     _verify(outputs["grbl"], outputs["grblhal"], "grbl", "grblhal")
+
+
+@settings(max_examples=40, deadline=None)
+@given(drawn=programs(tail="length"))
+def test_a_length_change_after_a_cycle_gets_its_return_level(drawn: Drawn) -> None:
+    """The same random cycles, then ``G43 H1`` alone and a move: Fanuc applies it at that move, grbl and grblHAL
+    where Z is programmed, so the move gets the Z the cycle left, derived by hand (the initial level under G98,
+    R under G99), whether the cycle was kept (grblHAL) or expanded (grbl); both cut the source's simulated path.
+    Where the block between left Z at a machine position, both refuse the change at its line."""
+    text = drawn.text
+    move = f"G1 X{_number(ENTRY_X)} Z{_number(drawn.level)} F100."
+    for target in ("grblhal", "grbl"):
+        try:
+            out = _translate(text, target)
+        except ErrorList as err:
+            messages = [str(e) for e in err.errors]
+            assert drawn.lost and len(messages) == 1 and LENGTH_LOST in messages[0], (target, text, messages)
+            continue
+        assert not drawn.lost, (target, text, out)
+        assert move in out and "G43.1 Z100." in out, (target, text, out)
+        _verify(text, out, "fanuc", target)
 
 
 def test_an_incremental_row_ends_at_its_last_hole() -> None:
