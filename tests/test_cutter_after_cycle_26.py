@@ -132,6 +132,22 @@ def test_a_length_change_beside_a_cycle_is_refused_whether_kept_or_expanded(targ
     assert len(messages) == 1 and messages[0].startswith("t.nc:2:") and "tool length change" in messages[0], messages
 
 
+def test_a_tap_cycle_made_at_the_spot_ends_where_it_started() -> None:
+    """A LinuxCNC rigid tap ``G33.1`` becomes a tap cycle at the spot for SINUMERIK (``CYCLE84``: a record with no
+    hole position, made by a lowering step); G33.1 leaves the tool where it was [V: LinuxCNC ``interp_convert.cc``,
+    ``synchronised_tap``'s docstring], so the point after it is where it stood: the drilling axis at the cycle's
+    R level (its start), X and Y unchanged. The translation runs through the steps that follow the point
+    without a traceback (``cycle_end`` raised ``KeyError: 'X'`` on the record), and cuts the source's path."""
+    text = "G21 G90 G17 G0 X0 Y0 Z1\nS1000 M3\nG33.1 Z-1.2 K0.1\nG41 D1 G1 X10 F100\nY10\nG40 G0 X20\nM2\n"
+    out = io.StringIO()
+    translate(io.StringIO(text).readlines(), out, file="t.ngc", source="linuxcnc", target="siemens", setup=SETUP,
+              diagnostics=Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO()))
+    assert "CYCLE84(" in out.getvalue(), out.getvalue()
+    report = verify_lines(io.StringIO(text), io.StringIO(out.getvalue()), file_in="t.ngc", file_out="o",
+                          source="linuxcnc", target="siemens", setup=SETUP, allow_ignored=True)
+    assert report.ok and report.max_deviation == 0, report.summary()
+
+
 # -- the differential --------------------------------------------------------------------------------------
 CYCLES = {"G73": "Q1.", "G74": "", "G81": "", "G82": "P300", "G83": "Q1.5", "G84": "", "G85": "", "G86": "",
           "G88": "P300", "G89": "P300"}

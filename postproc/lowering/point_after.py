@@ -30,6 +30,7 @@ from ..errors import PostprocError
 from ..interp.control import CONTROL, LABEL, IfThen
 from ..ir import CompoundMotion, Motion, Section
 from ..ir.expr import Expr
+from ..ir.state import PLANE_AXES
 
 MOVES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
 RETURNS: Final = frozenset(("home", "home2"))
@@ -47,12 +48,18 @@ the return level (``CycleExpansion.ENDS_OVER_THE_SPOT``)."""
 
 def cycle_end(cycle: CannedCycle) -> dict[str, float] | None:
     """Where a hole cycle block leaves the tool, absolute, program units: the plane's axes and the drilling
-    axis (a block of no hole, K0, where it stood: the axes known before it); None where not known (a kind no
-    family expands, a level or position the record lacks: the reader refused those already)."""
+    axis (a block of no hole, K0, where it stood: the axes known before it; a cycle at the spot, with no hole
+    position, the drilling axis alone); None where not known (a kind no family expands, a level the record
+    lacks: the reader refused those already)."""
     expansion = _BY_KIND.get(cycle.kind)
     if expansion is None:
         return None
+    first, second, normal = PLANE_AXES[cycle.plane]
     try:
+        if first not in cycle.position or second not in cycle.position:
+            # a cycle a lowering step made at the spot where the tool stands (a rigid tap become a tap cycle,
+            # ``cycles.rigid_tap_lowering``): the plane's axes stay, the drilling axis ends at the return level
+            return {normal: expansion.return_level(cycle)}
         return expansion.end(cycle)
     except PostprocError:
         return None
