@@ -30,6 +30,7 @@ from .context import Context
 from .frames.lowering import EVALUATE_KEY
 from .frames.parameters import frame_parameter_read
 from .interp.numbers import foreign_number
+from .interp.returns import foreign_return
 from .patterns.lowering import POINT_BY_POINT_KEY
 from .transforms import ProgramOptions, ProgramTransform, program_options, transform_program
 
@@ -154,6 +155,11 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context, registry: 
         theirs_made = None if theirs[0] is None else type(theirs[0]).VARIABLES
         if ours_made is not None and theirs_made is not None:
             foreign = foreign_number(body, ours_made, theirs_made, (src.NAME, dst.NAME))
+            if foreign is not None:
+                return foreign
+            assert program is not None and theirs[0] is not None  # (each made its table)
+            foreign = foreign_return(body, (ours_made, program.SUBPROGRAM_RULES),
+                                     (theirs_made, theirs[0].SUBPROGRAM_RULES), (src.NAME, dst.NAME))
             if foreign is not None:
                 return foreign
         dry = Diagnostics(ErrorLevel.RAISE, max_errors=1_000_000, warn_stream=io.StringIO())
