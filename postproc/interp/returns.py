@@ -23,8 +23,8 @@ from .variables import VariablesFactory
 
 def returned_names(family: VariablesFactory) -> frozenset[str]:
     """The named variables a return sets in ``family`` (none for a family without returned values)."""
-    names = getattr(family, "RETURNED", frozenset())
-    return names if isinstance(names, frozenset) else frozenset()
+    names: object = getattr(family, "RETURNED", None)
+    return frozenset(name for name in names if isinstance(name, str)) if isinstance(names, frozenset) else frozenset()
 
 
 def return_rule(family: VariablesFactory) -> str | None:
