@@ -5,8 +5,9 @@ grblHAL's side is derived by hand from its source (github.com/grblHAL/core, stor
 f80fc34d503bd62391a23b197b3e0ee66ce00cb7, ``ngc_flowctrl.c``): ``NGCFlowCtrl_Call`` sets both to 0 once the
 callee's level is open; ``NGCFlowCtrl_EndSub``/``NGCFlowCtrl_Return`` call ``stack_unwind_sub`` (the callee's
 parameters are gone) and only then evaluate the value, setting ``_value`` and ``_value_returned`` 1, or, without
-one, only ``_value_returned`` 0; the flow passing a definition (``skip_sub``) evaluates nothing. LinuxCNC's side is
-rs274's run of the same text.
+one, only ``_value_returned`` 0; the flow passing a definition (``skip_sub``) evaluates nothing; an argument a call
+does not give is the caller's (``ngc_param_get`` before ``stack_push``). LinuxCNC's side is rs274's run of the same
+text.
 """
 
 from __future__ import annotations
@@ -151,3 +152,46 @@ def test_a_linuxcnc_program_returning_values_it_never_reads_stays_native() -> No
     translate(io.StringIO(program, newline=""), out, file="t.ngc", source="linuxcnc", target="grblhal",
               setup=EXPRESSIONS, diagnostics=Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO()))
     assert "o100 endsub [#1*2.]" in out.getvalue() and "o100 call [3.]" in out.getvalue(), out.getvalue()
+
+
+INHERIT = """G21 G17 G90
+#2 = 7
+o100 sub
+  G1 X#1 Y#2 F100
+o100 endsub
+G0 X0 Y0 Z5
+o100 call [3]
+o100 call [4] [5]
+M2
+"""
+"""By hand from ``NGCFlowCtrl_Call``: the first call's #2 is the caller's 7 on grblHAL (rs274 would read 0)."""
+
+
+def _to_linuxcnc(text: str) -> tuple[str, list[str]]:
+    out = io.StringIO(newline="")
+    diagnostics = Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO())
+    translate(io.StringIO(text, newline=""), out, file="t.gcode", source="grblhal", target="linuxcnc",
+              setup=EXPRESSIONS, diagnostics=diagnostics)
+    return out.getvalue(), [str(w) for w in diagnostics.warnings]
+
+
+@pytest.mark.skipif(not rs274.available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_a_grblhal_call_reaches_linuxcnc_with_the_arguments_it_inherits() -> None:
+    """Each argument not given is written as the caller's parameter, which rs274 evaluates before the call (before:
+    ``o100 call [3.]``, which rs274 runs with #2 = 0)."""
+    text, warnings = _to_linuxcnc(INHERIT)
+    assert warnings == []
+    inherited = " ".join(f"[#{k}]" for k in range(3, 31))
+    assert f"o100 call [3.] [#2] {inherited}" in text and f"o100 call [4.] [5.] {inherited}" in text, text
+    expected = [("rapid", 0, 0, 5), ("feed", 3, 7, 5), ("feed", 4, 5, 5)]
+    assert _moves(INHERIT, "grblhal") == expected
+    assert _rs274_moves(text) == expected
+
+
+@pytest.mark.skipif(not rs274.available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_a_grblhal_program_reading_the_returned_value_reaches_linuxcnc_flattened() -> None:
+    text, warnings = _to_linuxcnc(WHERE)
+    assert len(warnings) == 1 and "line 7: it reads #<_value>, which linuxcnc sets otherwise (" in warnings[0], warnings
+    assert "grblhal evaluates a return value with the caller's parameters" not in warnings[0]  # (named the other way)
+    assert "linuxcnc evaluates a return value with the callee's parameters, grblhal with the caller's" in warnings[0]
+    assert _rs274_moves(text) == [m for m in _moves(WHERE, "grblhal")]
