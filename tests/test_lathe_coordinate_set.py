@@ -16,7 +16,7 @@ from pathlib import Path
 import pytest
 
 from postproc.api import translate
-from postproc.errors import ErrorList
+from postproc.errors import Diagnostics, ErrorList
 from postproc.setup.machine_setup import load_setup
 from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
@@ -157,3 +157,42 @@ def test_a_frame_command_a_lathe_simulation_does_not_model_is_refused(code: str,
         list(toolpath_events(io.StringIO(text), file="p.ngc", dialect="linuxcnc", setup=load_setup(SETUP)))
     assert [str(e) for e in caught.value.errors] == [
         f"p.ngc:5:1: error: {code} ({kind}) cannot be simulated on a lathe (its frame is not modelled there)"]
+
+
+COMPUTED = """G21 G0 X40. Z5.
+S500 M3
+#1=30.
+#2=2.
+#100=30.
+G50 X[#1*1] Z[#2*1]
+G0 X[0+#100] Z2.
+G4 P100
+G1 X10. F0.2
+G50 X20. Z[5.]
+G0 X20. Z5.
+G0 X10. Z5.
+M30
+"""
+"""The fuzz's whole program: it computes after the spindle starts, and feeds per revolution."""
+COMPUTED_MACHINE = [(20.0, 5.0), (20.0, 5.0), (10.0, 5.0), (10.0, 5.0), (5.0, 5.0)]
+"""By hand, radii: X40 Z5 stands at (20, 5); G50 X30 Z2 names that point (15, 2), a shift of (5, 3); X30 Z2 is
+there; X10 is (5 + 5, 2 + 3); G50 X20 Z5 names (10, 5) so, the shift (0, 0); X20 Z5 stays, X10 Z5 is (5, 5)."""
+
+
+@pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_a_lathe_program_computing_after_its_spindle_start_stays_symbolic() -> None:
+    """The symbolic text is read back from the spindle where the program stands (it was read from a stopped one,
+    so its feed per revolution was refused and the program flattened), and rs274 runs it as the G50s would."""
+    out = io.StringIO()
+    diagnostics = Diagnostics(warn_stream=io.StringIO())
+    translate(io.StringIO(COMPUTED), out, file="in.nc", source="fanuc", target="linuxcnc", setup=load_setup(SETUP),
+              diagnostics=diagnostics)
+    ngc = out.getvalue()
+    assert diagnostics.warnings == [] and "G92 X[#1*1.] Z[#2*1.]" in ngc, (diagnostics.warnings, ngc)
+    machine = _machine_moves(run_rs274(ngc))
+    assert len(machine) == len(COMPUTED_MACHINE), machine
+    for got, expected in zip(machine, COMPUTED_MACHINE):
+        assert got == pytest.approx(expected, abs=1e-4), machine
+    report = verify_lines(io.StringIO(COMPUTED), io.StringIO(ngc), file_in="in.nc", file_out="out.ngc",
+                          source="fanuc", target="linuxcnc", setup=load_setup(SETUP), tolerance=0.0)
+    assert report.ok and report.max_deviation == 0.0, report.summary()
