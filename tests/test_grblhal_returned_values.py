@@ -17,7 +17,7 @@ import io
 import pytest
 
 from postproc.api import translate
-from postproc.errors import Diagnostics, ErrorLevel
+from postproc.errors import Diagnostics, ErrorLevel, ErrorList
 from postproc.setup.groups import ControllerSettings
 from postproc.setup.machine_setup import MachineSetup
 from postproc.simulate.toolpath import toolpath_events
@@ -30,6 +30,9 @@ WHEN = """G21 G90 G0 X0 Y0 Z10
 o1 sub
   G0 X#<_value> Y#<_value_returned> Z1
 o1 endsub
+o4 sub
+o4 endsub [3]
+o4 call
 o2 sub
 o2 endsub [5]
 G0 X#<_value> Y#<_value_returned> Z2
@@ -101,11 +104,21 @@ def _rs274_moves(text: str) -> list[Move]:
 
 
 def test_grblhal_sets_the_returned_value_at_a_call_and_not_at_a_definition() -> None:
-    """By hand: the definition of o2 sets nothing (Z2 at 0, 0); o2's return sets 5 and 1; o1's call zeroes both
-    (Z1 at 0, 0) and its plain endsub sets only _value_returned (Z3 at 0, 0); o3's plain endsub keeps the 5 its
-    call of o2 left (Z4 at 5, 0)."""
-    assert _moves(WHEN, "grblhal") == [("rapid", 0, 0, 10), ("rapid", 0, 0, 2), ("rapid", 0, 0, 1),
+    """By hand: o4's return sets 3 and 1, the definition of o2 sets nothing (Z2 at 3, 1); o2's return sets 5 and 1;
+    o1's call zeroes both (Z1 at 0, 0) and its plain endsub sets only _value_returned (Z3 at 0, 0); o3's plain
+    endsub keeps the 5 its call of o2 left (Z4 at 5, 0). (rs274: Z2 at 5, 1, Z1 at 5, 1, Z4 at 0, 0.)"""
+    assert _moves(WHEN, "grblhal") == [("rapid", 0, 0, 10), ("rapid", 3, 1, 2), ("rapid", 0, 0, 1),
                                        ("rapid", 0, 0, 3), ("rapid", 5, 0, 4)]
+
+
+def test_grblhal_has_no_returned_value_before_a_call() -> None:
+    """Nothing sets ``_value`` before a call (``ngc_params_init`` does not), and ``ngc_expr.c`` reads a name never
+    set as "bad number format": an error where rs274 reads 0."""
+    text = "G21 G90 G0 X0 Y0 Z10\nG0 X#<_value>\nM2\n"
+    with pytest.raises(ErrorList) as caught:
+        _moves(text, "grblhal")
+    assert [str(e) for e in caught.value.errors] == ["t:2:4: error: named parameter #<_value> is not defined"]
+    assert _moves(text, "linuxcnc") == [("rapid", 0, 0, 10)]
 
 
 def test_grblhal_evaluates_a_return_value_with_the_callers_parameters() -> None:

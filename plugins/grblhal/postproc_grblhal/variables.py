@@ -14,14 +14,19 @@ From grblHAL core ``ngc_flowctrl.c`` (``NGCFlowCtrl_Call``, ``NGCFlowCtrl_EndSub
   ``#<_value>`` to it and ``#<_value_returned>`` to 1; without a value it sets only ``#<_value_returned>`` to 0,
   ``#<_value>`` keeping what the call or a call inside it set (rs274 sets it to 0).
 - the flow passing a definition runs nothing of its ``endsub [v]`` (``skip_sub``: rs274 sets ``#<_value>``).
+- nothing sets them before the first call (``ngc_params_init`` does not; ``ngc_expr.c`` reads a name never set as
+  an error, "bad number format"): a read before then is an error, as for any name not set (rs274 reads 0).
 """
 
 from __future__ import annotations
 
-from typing import ClassVar
+from typing import TYPE_CHECKING, Callable, ClassVar
 
 from postproc.ir.expr import Value
 from postproc.rs274.variables import NgcVariables
+
+if TYPE_CHECKING:
+    from postproc.frames.parameters import FrameReadings
 
 CALL_ARGUMENTS = 30
 """``#1``-``#30``: a call's arguments and the parameters local to it."""
@@ -33,6 +38,11 @@ class GrblhalVariables(NgcVariables):
     __slots__ = ()
     RETURN_RULE: ClassVar[str] = ("a call sets #<_value> and #<_value_returned> to 0, a return without a value "
                                   "sets only #<_value_returned> to 0")
+
+    def __init__(self, increment: Callable[[], float], frames: FrameReadings | None = None,
+                 machine_mm: float = 1.0) -> None:
+        super().__init__(increment, frames, machine_mm)
+        del self.globals_["_value"], self.globals_["_value_returned"]  # (module docstring: none before a call)
 
     def enter(self, args: dict[int, Value], new_level: bool) -> None:
         """An o-word call: the given arguments, and the caller's ``#k`` for every ``k`` not given."""
