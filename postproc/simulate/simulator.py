@@ -48,7 +48,7 @@ _EXACT_TEXTS: Final = frozenset((EXACT, "exact path"))
 _RARE_KEYS: Final = frozenset(("TapeMark", "InProfile", "NativeCode", "CompoundMotion", "CoordinateSet", "RigidTap",
                                "CycleCall", "FrameChange"))
 """Sections a CAM block has none of, each looked up by ``Simulator.block`` only where the block has one of them
-(a look-up ~130 instructions compiled, seven a block)."""
+(a look-up ~130 instructions compiled, eight a block)."""
 _KEY_KINDS: Final[dict[str, int]] = {
     key: (_KIND_MODAL if key in MODAL_KEYS else 0) | (_KIND_SETTING if key in _SETTING_KEYS else 0)
     | (_KIND_COMPENSATION if key in _COMPENSATION_KEYS else 0) | (_KIND_EVENT if key in _EVENT_KEYS else 0)
