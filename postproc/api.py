@@ -30,6 +30,7 @@ from .context import Context
 from .frames.lowering import EVALUATE_KEY
 from .frames.parameters import frame_parameter_read
 from .interp.numbers import foreign_number
+from .interp.returns import foreign_return
 from .patterns.lowering import POINT_BY_POINT_KEY
 from .transforms import ProgramOptions, ProgramTransform, program_options, transform_program
 
@@ -156,6 +157,11 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context, registry: 
             foreign = foreign_number(body, ours_made, theirs_made, (src.NAME, dst.NAME))
             if foreign is not None:
                 return foreign
+            assert program is not None and theirs[0] is not None  # (each made its table)
+            foreign = foreign_return(body, (ours_made, program.SUBPROGRAM_RULES),
+                                     (theirs_made, theirs[0].SUBPROGRAM_RULES), (src.NAME, dst.NAME))
+            if foreign is not None:
+                return foreign
         dry = Diagnostics(ErrorLevel.RAISE, max_errors=1_000_000, warn_stream=io.StringIO())
         trial = src.context(ctx.file, ctx.setup, dry)
         trial.state = copy.deepcopy(ctx.state)
@@ -179,10 +185,16 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context, registry: 
             return err.message
         if dry.errors:
             return _first(dry)
-        # The symbolic output must read back under the target's own rules (labels, nesting...).
+        # The symbolic output must read back under the target's own rules (labels, nesting...), from the spindle
+        # where the program stands (a feed per revolution after an S500 M3 before the first construct is sound).
         back = Diagnostics(ErrorLevel.RAISE, max_errors=1_000_000, warn_stream=io.StringIO())
+        standing = ctx.state
+
+        def turning(read: Context) -> None:  # the spindle as the program left it before the text read back
+            read.state.spindle, read.state.spindle_rpm = standing.spindle, standing.spindle_rpm
+
         try:
-            for _ in read_blocks(io.StringIO(text.getvalue()), ctx.file, dst, ctx.setup, back)[1]:
+            for _ in read_blocks(io.StringIO(text.getvalue()), ctx.file, dst, ctx.setup, back, prepare=turning)[1]:
                 pass
         except PostprocError as err:
             return f"the {dst.NAME} output would not read back: {err.message}"

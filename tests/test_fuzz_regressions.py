@@ -12,6 +12,9 @@ from postproc.errors import Diagnostics, ErrorList
 from postproc.setup.machine_setup import InputSettings, MachineSettings, MachineSetup
 from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
+from tests.support.generators.grblhal_targets import check as grblhal_check
+from tests.support.generators.macros import as_rs274_prints
+from tests.support.rs274 import available as rs274_available, canonical_moves, run_rs274
 from tests.support.tools import with_tools
 
 HEAD = "G21 G90 G0 X0. Y0. Z10.\n"
@@ -454,3 +457,22 @@ def test_an_arc_below_rs274s_smallest_radius_is_refused_for_linuxcnc() -> None:
     translate(io.StringIO("G17 G21 G90\nG0 X20. Y0. Z50.\nF100.\nG2 X20.002 Y0.002 I0.002 J0.\nM30\n"), out,
               file="t.nc", source="fanuc", target="linuxcnc", diagnostics=Diagnostics(warn_stream=io.StringIO()))
     assert "I0.002" in out.getvalue()
+
+
+TINY = "G21 G90 G0 X0 Y0 Z5\nG1 X0.9999954 F100\nG1 X1\nG1 X1.0001\nM2\n"
+"""A feed of 0.0000046 mm (fuzz, grblhal targets: ``COS[SIN[10]]`` then ``X[0.5+0.5]``), then one of 0.0001 mm."""
+
+
+@pytest.mark.skipif(not rs274_available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_the_rs274_comparison_drops_the_moves_rs274_prints_as_standing_still() -> None:
+    """rs274 prints 4 decimals: the 0.0000046 mm feed ends where the one before it printed, so ``canonical_moves``
+    drops it, and the fuzz's comparison with a toolpath (6 decimals) does too; the 0.0001 mm feed stays on both."""
+    theirs = [e for e in canonical_moves(run_rs274(TINY), start=(0.0, 0.0, 0.0)) if "move" in e]
+    ours = [e for e in toolpath_events(io.StringIO(TINY), file="t.ngc", dialect="linuxcnc") if "move" in e]
+    assert len(ours) == 4 and len(theirs) == 3, (ours, theirs)
+    printed = as_rs274_prints(ours)
+    assert [(m["move"], round(m["x"], 4)) for m in printed] == [(m["move"], round(m["x"], 4)) for m in theirs] \
+        == [("rapid", 0.0), ("feed", 1.0), ("feed", 1.0001)]
+    program = ("%\nO0001\nG21 G90 G0 X0 Y0 Z5.\n#26=1\n#101=10.\nG1 X[ABS[#26]*COS[SIN[#101]]] Z-0.5 F200.\n"
+               "G1 X[0.5+0.5] Z-0.5 F200.\nM30\n%\n")
+    assert grblhal_check("fanuc", program, "everything") == "ok"

@@ -16,7 +16,9 @@ from pathlib import Path
 import pytest
 
 from postproc.api import translate
+from postproc.errors import Diagnostics, ErrorList
 from postproc.setup.machine_setup import load_setup
+from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
 from tests.support.rs274 import available, run_rs274
 
@@ -107,3 +109,90 @@ def test_a_coordinate_setting_before_a_machine_move_leaves_the_gsk_resolution_re
     translate(io.StringIO(text.replace("G50 X100. Z50.\n", "")), out, file="in.nc", source="fanuc", target="gsk",
               setup=machine)
     assert "G00 X200. Z300." in out.getvalue()  # 0 - (-200) (X a diameter), 0 - (-300): by hand
+
+
+STANDING = "G21 G0 X40. Z5.\nS500 M3\nG50 X20.\nX20.\nG1 X10. F0.2\nM30\n"
+"""Found by the fuzz (variable words, Fanuc lathe to LinuxCNC): a move to the point a G50 just named."""
+
+
+def _machine_moves(calls: list[str]) -> list[tuple[float, float]]:
+    """rs274's straight moves as machine points (program coordinates plus the G92 offset in force), X a radius."""
+    offset = (0.0, 0.0)
+    machine: list[tuple[float, float]] = []
+    for call in calls:
+        name, _, args = call.partition("(")
+        numbers = [float(v) for v in re.findall(r"-?\d+\.\d+", args)]
+        if name.endswith("SET_G92_OFFSET"):
+            offset = (numbers[0], numbers[2])
+        elif name.endswith("STRAIGHT_TRAVERSE") or name.endswith("STRAIGHT_FEED"):
+            machine.append((numbers[0] + offset[0], numbers[2] + offset[1]))
+    return machine
+
+
+@pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_a_move_to_the_point_a_g92_names_stands_still_on_both_sides() -> None:
+    """rs274 runs the translation's ``G92 X20.`` then ``G0 X20.``: the machine stays where it stood, so the
+    simulation of the LinuxCNC program counts the moves rs274 makes (the Fanuc side's G50 drops that move too);
+    before, the lathe simulation ignored the G92 and counted a rapid that verify called a structure change."""
+    ngc = linuxcnc(STANDING)
+    assert "G92 X20." in [line.strip() for line in ngc.splitlines()], ngc
+    machine = _machine_moves(run_rs274(ngc))
+    moving = [b for a, b in zip(machine, machine[1:]) if b != pytest.approx(a, abs=1e-6)]
+    assert len(machine) == 3 and len(moving) == 1, machine  # the G0 X20. stands still, the feed moves
+    events = [e for e in toolpath_events(io.StringIO(ngc), file="out.ngc", dialect="linuxcnc",
+                                         setup=load_setup(SETUP)) if "move" in e]
+    assert len(events) == 1 + len(moving), events  # the first rapid, then the moves rs274 makes
+    assert (events[-1]["x"], events[-1]["z"]) == (10, 5)  # X10. read from the point G92 named X20.
+    report = verify_lines(io.StringIO(STANDING), io.StringIO(ngc), file_in="in.nc", file_out="out.ngc",
+                          source="fanuc", target="linuxcnc", setup=load_setup(SETUP), tolerance=0.0)
+    assert report.ok and report.max_deviation == 0.0, report.summary()
+
+
+@pytest.mark.parametrize("code, kind", [("G92.1", "origin clear"), ("G92.2", "origin suspend"), ("G52 X5.", "local")])
+def test_a_frame_command_a_lathe_simulation_does_not_model_is_refused(code: str, kind: str) -> None:
+    """The lathe simulation keeps program coordinates: a command that moves them by an offset it does not keep is
+    a located error, not a toolpath in other coordinates."""
+    text = f"G18 G7\nG21 G95 G0 X40. Z5.\nS500 M3\nG92 X20.\n{code}\nG0 X30.\nM2\n"
+    with pytest.raises(ErrorList) as caught:
+        list(toolpath_events(io.StringIO(text), file="p.ngc", dialect="linuxcnc", setup=load_setup(SETUP)))
+    assert [str(e) for e in caught.value.errors] == [
+        f"p.ngc:5:1: error: {code} ({kind}) cannot be simulated on a lathe (its frame is not modelled there)"]
+
+
+COMPUTED = """G21 G0 X40. Z5.
+S500 M3
+#1=30.
+#2=2.
+#100=30.
+G50 X[#1*1] Z[#2*1]
+G0 X[0+#100] Z2.
+G4 P100
+G1 X10. F0.2
+G50 X20. Z[5.]
+G0 X20. Z5.
+G0 X10. Z5.
+M30
+"""
+"""The fuzz's whole program: it computes after the spindle starts, and feeds per revolution."""
+COMPUTED_MACHINE = [(20.0, 5.0), (20.0, 5.0), (10.0, 5.0), (10.0, 5.0), (5.0, 5.0)]
+"""By hand, radii: X40 Z5 stands at (20, 5); G50 X30 Z2 names that point (15, 2), a shift of (5, 3); X30 Z2 is
+there; X10 is (5 + 5, 2 + 3); G50 X20 Z5 names (10, 5) so, the shift (0, 0); X20 Z5 stays, X10 Z5 is (5, 5)."""
+
+
+@pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
+def test_a_lathe_program_computing_after_its_spindle_start_stays_symbolic() -> None:
+    """The symbolic text is read back from the spindle where the program stands (it was read from a stopped one,
+    so its feed per revolution was refused and the program flattened), and rs274 runs it as the G50s would."""
+    out = io.StringIO()
+    diagnostics = Diagnostics(warn_stream=io.StringIO())
+    translate(io.StringIO(COMPUTED), out, file="in.nc", source="fanuc", target="linuxcnc", setup=load_setup(SETUP),
+              diagnostics=diagnostics)
+    ngc = out.getvalue()
+    assert diagnostics.warnings == [] and "G92 X[#1*1.] Z[#2*1.]" in ngc, (diagnostics.warnings, ngc)
+    machine = _machine_moves(run_rs274(ngc))
+    assert len(machine) == len(COMPUTED_MACHINE), machine
+    for got, expected in zip(machine, COMPUTED_MACHINE):
+        assert got == pytest.approx(expected, abs=1e-4), machine
+    report = verify_lines(io.StringIO(COMPUTED), io.StringIO(ngc), file_in="in.nc", file_out="out.ngc",
+                          source="fanuc", target="linuxcnc", setup=load_setup(SETUP), tolerance=0.0)
+    assert report.ok and report.max_deviation == 0.0, report.summary()

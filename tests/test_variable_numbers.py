@@ -69,3 +69,12 @@ def test_numbers_are_found_in_every_construct() -> None:
     blocks = read_program(io.StringIO("#1=#2\nG0 X#3\no100 if [#4 GT 1]\no100 endif\n#[#5]=1\nM2\n"),
                           file="t.ngc", dialect="linuxcnc")
     assert set(numbered_variables(blocks)) == {1, 2, 3, 4, 5, COMPUTED}
+
+
+def test_a_number_read_only_in_a_word_is_found_too() -> None:
+    """``G0 X#3000`` alone in a condition: the keep check sees the word's expression before the block syntax reads it
+    into a section (it was kept: ``G00 X#3000`` for Fanuc, where #3000 is the alarm). Flattened, rs274's 0."""
+    text, warnings = _translated("G21 G90 G0 X0 Y0 Z10\no100 if [1]\nG0 X#3000\no100 endif\nM2\n", "linuxcnc",
+                                 "fanuc")
+    assert "#" not in text and "G00 X0." in text.splitlines(), text
+    assert any("#3000 is no plain variable of fanuc" in w for w in warnings), warnings

@@ -382,17 +382,17 @@ class Interpreter(RunState):
                                    else evaluate_number(closing.value, vars_, "a return value"))
             frame.pc = end + 1
         elif isinstance(control, SubEnd):
-            value = None if control.value is None else evaluate_number(control.value, vars_, "a return value")
-            self._return(frame, block, value, None)
+            value, later = self._returned(control.value)
+            self._return(frame, block, value, None, later)
         elif isinstance(control, Return) and len(self.frames) == 1 and self.rules.main_return_refused:
             raise ProgramError(f"'{source_text(block)}' returns from the main program (it ends a subroutine)")
         elif isinstance(control, Return) and len(self.frames) == 1 and self.rules.main_return_words:
             self.ended = True  # the words that end the program run instead
             yield ExecutedBlock(block.line, None, block.eol, list(self.rules.main_return_words), frame.origin)
         elif isinstance(control, Return):
-            value = None if control.value is None else evaluate_number(control.value, vars_, "a return value")
+            value, later = self._returned(control.value)
             target = None if control.target is None else self._integer(control.target, "the return target")
-            self._return(frame, block, value, target)
+            self._return(frame, block, value, target, later)
         elif isinstance(control, Call):
             yield from self._call(frame, block, control)
         elif isinstance(control, ModalCall):
@@ -471,7 +471,19 @@ class Interpreter(RunState):
         self.frames.append(callee)
         yield from self._note(frame, block, f"call {index} of {count}" if count > 1 else "call")
 
-    def _return(self, frame: Frame, block: Block | None, value: Value, target: int | None) -> None:
+    def _returned(self, expr: Expr | None) -> tuple[Value, Expr | None]:
+        """A return's value: evaluated here, in the returning level (None, None: it has none), or, where the
+        rules say the controller evaluates it back in the caller (``SubprogramRules.value_in_caller``) and this
+        is a call, left to ``_return`` as its expression (``(None, expr)``)."""
+        if expr is None:
+            return None, None
+        if self.rules.value_in_caller and len(self.frames) > 1:
+            return None, expr
+        return evaluate_number(expr, self.vars, "a return value"), None
+
+    def _return(self, frame: Frame, block: Block | None, value: Value, target: int | None,
+                later: Expr | None = None) -> None:
+        """Back from ``frame``, returning ``value``, or ``later`` evaluated once the caller's level is back."""
         frames = self.frames
         if len(frames) == 1 and self.called and target is None:
             self.ended = True  # a macro file run on its own returns to its (absent) caller: the run ends
@@ -490,6 +502,8 @@ class Interpreter(RunState):
             return
         frames.pop()
         self.vars.leave(frame.new_level, value)
+        if later is not None:
+            self.vars.returned(evaluate_number(later, self.vars, "a return value"))
         caller = frames[-1]
         if frame.index < frame.count and target is None:
             call_block = frame.call_block

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from typing import Iterable, Iterator
 
-from ..ir.expr import EvalError
+from ..ir.expr import EvalError, Expr
 from ..ir import Block
 from .variables import VariablesFactory
 
@@ -22,10 +22,13 @@ COMPUTED = -1
 
 def numbered_variables(blocks: Iterable[Block]) -> Iterator[int]:
     """The variable numbers ``blocks`` name (``COMPUTED`` for a computed one), found through each section's
-    XML (every section has one), so no construct's words are missed."""
+    XML (every section has one), so no construct's words are missed, and through each computed word's value
+    (``Block.values``: the blocks a keep check sees are not yet read into sections, so ``G0 X#3000`` has its
+    expression there only)."""
     for block in blocks:
-        for section in block.sections.values():
-            for var in section.make_xml_source().iter("Var"):
+        computed = [value for value in block.values.values() if isinstance(value, Expr)]
+        for item in (*block.sections.values(), *computed):
+            for var in item.make_xml_source().iter("Var"):
                 if var.get("name") is not None:
                     continue
                 kids = [kid for kid in var if isinstance(kid.tag, str)]

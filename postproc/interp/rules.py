@@ -34,6 +34,10 @@ class SubprogramRules:
     """The flow passing an ``o<n> sub`` definition skips its body but runs its ``endsub [v]`` as a return
     (rs274: ``o100 sub`` .. ``o100 endsub [6]`` met before any call leaves ``#<_value>`` 6 and
     ``#<_value_returned>`` 1; a plain ``endsub`` leaves both 0)."""
+    value_in_caller: bool = False
+    """A return's value (``endsub [v]``, ``return [v]``) is evaluated once the callee's level is gone, with the
+    caller's parameters (grblHAL: ``ngc_flowctrl.c`` unwinds the call, then evaluates the expression); False:
+    with the callee's (rs274)."""
     call_levels: int | None = None
     """The controller's own bound on nested calls, where it has one below the set-up's ``callDepth``: a call
     deeper than that is refused where the controller refuses it (grblHAL: 10). None: only the set-up's."""

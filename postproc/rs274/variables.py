@@ -11,7 +11,7 @@ Reading or writing a variable only the machine knows is an ``EvalError`` naming 
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Callable, Final, Hashable
+from typing import TYPE_CHECKING, Callable, ClassVar, Final, Hashable
 
 from ..ir.expr import Arithmetic, EvalError, Vacancy, Value, VarKey
 from ..interp.variables import MACHINE_ONLY, ProgramAlarm, SystemRanges, system_variable
@@ -194,6 +194,11 @@ class NgcVariables:
     __slots__ = ("numbered", "named", "globals_", "_increment", "frames", "machine_mm")
     LOCALS = 30
     LAST_GLOBAL = 5000
+    RETURNED: ClassVar[frozenset[str]] = frozenset(("_value", "_value_returned"))
+    """What a return sets (``postproc.interp.returns``)."""
+    RETURN_RULE: ClassVar[str] = ("a call leaves #<_value> and #<_value_returned> as they are, a return without a "
+                                  "value sets both to 0")
+    """When they change (``leave``; a definition the flow passes: ``SubprogramRules.definition_runs_its_end``)."""
 
     def __init__(self, increment: Callable[[], float], frames: FrameReadings | None = None,
                  machine_mm: float = 1.0) -> None:

@@ -46,9 +46,9 @@ EXACT: Final = "exact stop"
 _EXACT_TEXTS: Final = frozenset((EXACT, "exact path"))
 """The settings of the modes that reach every programmed point (``PathControl``)."""
 _RARE_KEYS: Final = frozenset(("TapeMark", "InProfile", "NativeCode", "CompoundMotion", "CoordinateSet", "RigidTap",
-                               "CycleCall"))
+                               "CycleCall", "FrameChange"))
 """Sections a CAM block has none of, each looked up by ``Simulator.block`` only where the block has one of them
-(a look-up ~130 instructions compiled, seven a block)."""
+(a look-up ~130 instructions compiled, eight a block)."""
 _KEY_KINDS: Final[dict[str, int]] = {
     key: (_KIND_MODAL if key in MODAL_KEYS else 0) | (_KIND_SETTING if key in _SETTING_KEYS else 0)
     | (_KIND_COMPENSATION if key in _COMPENSATION_KEYS else 0) | (_KIND_EVENT if key in _EVENT_KEYS else 0)
@@ -64,6 +64,24 @@ class Simulator(Moves):
     """Modal state and position of one program run; ``block`` emits the block's events in order."""
 
     # -- one block ---------------------------------------------------------------------------------
+    def lathe_frame(self, block: Block, frame: Any) -> None:
+        """A frame command on a lathe, where no frame is evaluated (``postproc.frames.lowering``: the toolpath
+        keeps the program's coordinates). An origin (``G92 X.. Z..``, the ``G50``/``G92`` coordinate setting of
+        the family that reads it so) makes the tool's present point read the words, a ``CoordinateSet``: so a
+        Fanuc T ``G50`` written as LinuxCNC's ``G92`` counts the same moves [V: rs274 2.9.0~pre1, lathe G7 at X40:
+        ``G92 X20`` prints ``SET_G92_OFFSET(10, ..)`` and a following ``G0 X20`` stands still; ``G92`` a second
+        time sets the offset again from the present point: ``NgcLatheWriting.coordinate_set_words``]. Any other
+        frame command (``G92.1``-``G92.3``, ``G52``, a rotation) would move the program's coordinates by an
+        offset this simulation does not keep: a located error, not a toolpath in the wrong coordinates."""
+        if frame.kind != "origin":
+            raise UnsupportedError(f"{frame.describe()} cannot be simulated on a lathe (its frame is not modelled "
+                                   "there)", self._at(block))
+        for axis, value in frame.words.items():
+            if isinstance(value, Expr):
+                raise UnsupportedError(f"{frame.describe()} with a computed {axis} cannot be simulated",
+                                       self._at(block, axis))
+            self._coordinate(block, axis, float(value))
+
     def block(self, block: Block, emit: Callable[[Emitted], None]) -> None:
         sections: dict[str, Any] = block.sections  # each section read by its key: Any
         if not sections:
@@ -147,6 +165,9 @@ class Simulator(Moves):
         if coords is not None:
             for axis, value in coords.axes.items():
                 self._coordinate(block, axis, value)
+        frame = sections.get("FrameChange") if rare and self.lathe else None
+        if frame is not None:
+            self.lathe_frame(block, frame)
         if compound is not None:
             cutter = self.cutter
             held: Suspended | None = None

@@ -54,5 +54,6 @@ class GrblhalProgramSyntax(NgcProgramSyntax):
     SUBPROGRAM_RULES: ClassVar[SubprogramRules] = SubprogramRules(forward_search=False,
                                                                   main_return_words=(("M", "2"),),
                                                                   definition_runs_its_end=False,
+                                                                  value_in_caller=True,
                                                                   call_levels=CALL_LEVELS,
                                                                   flow_stack=FLOW_STACK)

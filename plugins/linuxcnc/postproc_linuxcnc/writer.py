@@ -12,6 +12,8 @@
   ``M98`` and an ``o<n> sub`` only by ``o<n> call`` (``postproc.interp.rules``): a Fanuc program called
   by ``G65`` (a macro call, ``o<n> call``) is written ``o<n> sub`` .. ``o<n> endsub``, its ``M99`` as
   ``o<n> return``; one program called both ways is unsupported.
+* An o-word call from grblHAL gives every argument it does not give as the caller's ``[#k]``: grblHAL hands the
+  callee the caller's values there, rs274 0 (``INHERITING_SOURCES``).
 * Work offsets 7-9 are G59.1-G59.3; inverse-time feed is G93; M19 takes its angle as R.
 * A comment from another dialect never becomes an active one: ``( MSG, x)`` read from Fanuc or ISG is
   written ``(- MSG, x)`` (``active_comments.COMMENTS``); from LinuxCNC it is the program's own.
@@ -64,6 +66,26 @@ _LABELLED = (*_OPENING, *_CLOSING, ElseIf, Else, Break, Continue)
 NAMES = NameRule(numbers=range(0, 2**31), spare=range(0), names=True, lower_case=True, one_kind=True)
 """o-word numbers and ``<names>`` (rs274 lower-cases a line outside its comments); the kind of call
 fixed by the definition (``postproc.interp.rules``)."""
+
+
+
+CALL_ARGUMENTS = 30
+"""``#1``-``#30``: what an o-word call may set."""
+INHERITING_SOURCES = frozenset(("grblhal",))
+"""Sources whose o-word call hands the callee the caller's ``#k`` for an argument it does not give, where rs274
+reads 0: grblHAL fills ``#n+1``-``#30`` with ``ngc_param_get`` in the caller's context before it opens the
+callee's [V: grblHAL core ``ngc_flowctrl.c`` ``NGCFlowCtrl_Call``, stored commit f80fc34]."""
+
+
+def inherited_arguments(call: Call) -> Call:
+    """``call`` with every argument it does not give written as the caller's parameter (``[#k]``: rs274
+    evaluates a call's arguments in the caller's level), so the callee reads what an inheriting source's does."""
+    if call.kind != "macro" or len(call.args) >= CALL_ARGUMENTS:
+        return call
+    given = dict(call.args)
+    for k in range(1, CALL_ARGUMENTS + 1):
+        given.setdefault(k, Var(Num(float(k))))
+    return Call(call.name, given, call.repeat, call.kind)
 
 
 class LinuxcncWriter(WordWriter):
@@ -255,6 +277,8 @@ class LinuxcncWriter(WordWriter):
                 return self.counted_loop(section, block)
             if self.source_dialect != self.DIALECT:
                 section = self._relabel(section, block)
+            if isinstance(section, Call) and self.source_dialect in INHERITING_SOURCES:
+                section = inherited_arguments(section)
             return [spell_oword(section)]
         except UnsupportedError as err:
             if err.location is None:
