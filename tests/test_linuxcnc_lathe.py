@@ -140,6 +140,31 @@ def test_verify_lists_a_lost_g96_and_a_lost_clamp(out: str, listed: list[str]) -
     assert [line for line in report.ignored if line.startswith("spindle")] == listed, report.summary()
 
 
+MODES_SOURCE = "G21 G99 G97 S500 M03\nG00 X50. Z2.\nG01 X40. F0.2\nG98\nG01 Z-10. F100.\nG99\nG01 X45. F0.1\nM30\n"
+"""Fanuc T: per revolution (G99), a feed per minute (G98) in the middle, per revolution again (DIALECTS.md 2.2)."""
+MODES_KEPT = "G18 G7\nG21 G95 G97 S500 M3\nG0 X50. Z2.\nG1 X40. F0.2\nG94\nG1 Z-10. F100.\nG95\nG1 X45. F0.1\nM2\n"
+"""The same written by hand for LinuxCNC (G95 per revolution, G94 per minute)."""
+
+
+@pytest.mark.parametrize("out, mismatch", [
+    (MODES_KEPT, None),
+    (MODES_KEPT.replace("G94\n", ""), "IN has feed per minute from here, OUT a feed to X40 Z-10 F100"),
+    (MODES_KEPT.replace("G95\nG1 X45.", "G1 X45."), "IN has feed per revolution from here, OUT a feed to X45 Z-10 F0.1"),
+    (MODES_KEPT.replace("G94\n", "").replace("G95\nG1 X45.", "G1 X45."),
+     "IN has feed per minute from here, OUT a feed to X40 Z-10 F100"),
+], ids=["kept", "g94-lost", "g95-lost", "both-lost"])
+def test_verify_sees_a_change_of_feed_mode_in_mid_program(out: str, mismatch: str | None) -> None:
+    """F100 per revolution where the source feeds 100 mm/min is a crash; until issue 29's audit verify compared a
+    move's F but not its feed mode after the header's, so every one of these verified "ok". Hand-written pairs."""
+    report = verify_lines(io.StringIO(MODES_SOURCE), io.StringIO(out), file_in="in.nc", file_out="out.ngc",
+                          source="fanuc", target="linuxcnc", setup=FANUC_T, tolerance=0.0)
+    assert report.mismatch == mismatch, report.summary()
+    assert report.ok == (mismatch is None)
+    if mismatch is None:
+        assert code_lines(write(MODES_SOURCE, "fanuc", FANUC_T))[3:8] == ["G1 X40. F0.2", "G94 F0.2",
+                                                                           "G1 Z-10. F100.", "G95 F100.", "G1 X45. F0.1"]
+
+
 # -- writing, by hand ----------------------------------------------------------------------------------
 # (a program without units gets the millimetres it was read in, G21: postproc.lowering.units_at_start)
 
