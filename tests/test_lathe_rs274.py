@@ -13,8 +13,8 @@ seeded random differentials, ``SEEDS`` programs each (``POSTPROC_LATHE_DIFFERENT
 
 Compared per move: end points and arc centres as radii (ours are diameters, ``x_mode``), the feed of a
 feed move (mm/rev or mm/min as programmed) and its mode (per revolution or not: rs274's ``SET_FEED_MODE``),
-and a thread move's lead: ours along its major axis (F, or ``ThreadLead``), rs274's ``START_SPEED_FEED_SYNC`` along the path, converted with the move's own geometry
-(``postproc.geometry.thread_lead``). The done-when programs (the bundled Fanuc T and GSK examples) go the same way.
+and a thread move's lead: ours along its major axis (F, or ``ThreadLead``), rs274's ``START_SPEED_FEED_SYNC``
+along the path, converted with the move's own geometry (``postproc.geometry.thread_lead``). The done-when programs (the bundled Fanuc T and GSK examples) go the same way.
 """
 
 from __future__ import annotations
