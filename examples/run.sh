@@ -68,28 +68,25 @@ echo
 echo "== out/prof_contour_xy.fanuc.nc: an ISG \$FOR contour kept as Custom Macro B"
 cat out/prof_contour_xy.fanuc.nc
 # Lathes: GSK 980TDc and Fanuc T keep their cycles native between them (every word written for GSK);
-# a control without lathe cycles gets the passes (threads need a synchronised spindle: Fanuc/GSK only).
+# LinuxCNC gets the roughing, grooving and threading passes (threads as G33 moves, G96 with its clamp as
+# G96 D.. S.., G99 as G95; issue 29); grbl has no spindle-synchronised motion.
 GSK=examples/setups/gsk_980tdc.xml
 FT=examples/setups/fanuc_0i_tf.xml
 for f in examples/gsk/*.nc; do
   n=$(basename "$f" .nc)
   run translate "$f" --from gsk --to fanuc --machine "$GSK" -o "out/$n.fanuc.nc"
   run verify "$f" "out/$n.fanuc.nc" --from gsk --to fanuc --machine "$GSK"
-  if ! grep -q "G76\|G92" "$f"; then
-    # LinuxCNC takes the turret index's offset as G43 H; grbl has no lathe tool offsets (translate warns,
-    # verify reports the lost offset), so it is not shown here
-    run translate "$f" --from gsk --to linuxcnc --machine "$GSK" -o "out/$n.linuxcnc.nc"
-    run verify "$f" "out/$n.linuxcnc.nc" --from gsk --to linuxcnc --machine "$GSK"
-  fi
+  # LinuxCNC takes the turret index's offset as G43 H; grbl has no lathe tool offsets (translate warns,
+  # verify reports the lost offset), so it is not shown here
+  run translate "$f" --from gsk --to linuxcnc --machine "$GSK" -o "out/$n.linuxcnc.nc"
+  run verify "$f" "out/$n.linuxcnc.nc" --from gsk --to linuxcnc --machine "$GSK"
 done
 for f in examples/fanuc-lathe/*.nc; do
   n=$(basename "$f" .nc)
   run translate "$f" --from fanuc --to gsk --machine "$FT" -o "out/$n.gsk.nc"
   run verify "$f" "out/$n.gsk.nc" --from fanuc --to gsk --machine "$FT"
-  if ! grep -q "G76\|G92\|G96" "$f"; then
-    run translate "$f" --from fanuc --to linuxcnc --machine "$FT" -o "out/$n.ngc"
-    run verify "$f" "out/$n.ngc" --from fanuc --to linuxcnc --machine "$FT"
-  fi
+  run translate "$f" --from fanuc --to linuxcnc --machine "$FT" -o "out/$n.ngc"
+  run verify "$f" "out/$n.ngc" --from fanuc --to linuxcnc --machine "$FT"
 done
 echo
 echo "== out/o1001_plate_drill_tap.grbl.nc (first 30 lines)"

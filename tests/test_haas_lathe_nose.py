@@ -309,3 +309,43 @@ def test_the_roughing_and_the_finishing_take_one_path_at_outside_corners(tmp_pat
     assert [m["move"] for m in finish] == ["rapid", "feed", "feed", "feed", "feed", "rapid", "rapid"]
     for move, (z, x) in zip(finish, tip):
         assert move["z"] / 25.4 == pytest.approx(z, abs=1e-5) and move["x"] / 25.4 == pytest.approx(2 * x, abs=1e-5)
+
+
+CHART_ANGLES = (15, 20, 46, 50, 55, 60)
+"""Rows of the Haas manual's "Tool Radius And Angle Chart (1/32 RADIUS)" (``tests/test_haas_nose.HAAS_CHART``,
+quoted there with its source) steep enough for a roughing level to end on a taper 0.5 in long."""
+
+
+@pytest.mark.parametrize("angle", CHART_ANGLES)
+def test_a_compensated_taper_in_the_roughing_and_finishing_cycles_is_shifted_by_the_haas_chart(angle: int) -> None:
+    """The roughing cycle under compensation against the controller's documented figures (issue 29, "a roughing
+    cycle with compensation against the controller's documented example"): a one-block G71 (G42 in its P block,
+    G40 in its Q block, U0 W0) and its G70 over a turn at X1.0 (diameter), a taper at ``angle`` to the Z axis
+    rising toward the chuck, a turn, with a 1/32 in nose, tip 3. Without allowances every roughing level ends on
+    the finishing shape, the compensated taper: the programmed taper moved by the chart's Zc along Z (and by its
+    Xc, a diameter, along X); so do the finishing pass's corner before the taper and the taper's end, in G71's
+    last pass and in G70. Within one unit of the chart's fourth decimal (its rounding)."""
+    from tests.support.nose_tips import one_tool
+    from tests.test_haas_nose import HAAS_CHART
+    r, theta, length = 1.0 / 32.0, math.radians(angle), 0.5
+    top = round(2 * (0.5 + length * math.sin(theta)), 6) / 2  # the taper's end: X (a radius) and Z, as written
+    end_z = round(-length * math.cos(theta), 6)
+    text = (f"G00 G18 G20 G40 G80 G99\nT0101\nG97 S1000 M03\nG00 X2.2 Z0.1\n"
+            f"G71 P10 Q20 U0 W0 D0.05 F0.010\nN10 G42 G00 X1.\nG01 Z0.\nX{2 * top:.6f} Z{end_z:.6f}\nZ-1.\n"
+            f"N20 G40 G00 X2.2\nG70 P10 Q20\nM05\nM30\n")
+    moves = controlled(text, "fanuc", one_tool("haas_st10_lathe.xml", 1, r * 25.4, 3), "t.nc")
+    xc, zc = HAAS_CHART[angle]
+
+    def off_taper(x: float, z: float) -> tuple[float, float]:
+        """How far (X as a diameter, Z) the point (X radius, Z) lies from the programmed taper's line."""
+        return 2 * abs(x - (0.5 - z * math.tan(theta))), abs(z + (x - 0.5) / math.tan(theta))
+
+    for line in (5, 11):  # G71, G70
+        points = [(m["x"] / 25.4 / 2, m["z"] / 25.4) for m in moves if m["line"] == line and m["move"] == "feed"]
+        on_taper = [(x, z) for x, z in points if z < 0 and 0.5 - 1e-9 <= x < top - r]  # below the top's corner
+        levels = [0.5 + 0.05 * k for k in range(1, 40) if 0.5 + 0.05 * k < top - r] if line == 5 else []
+        assert len(on_taper) == len(levels) + 1, (line, points)  # the levels' ends and the corner at X1.0
+        assert any(abs(x - top) < 1e-6 for x, _ in points), points  # the taper's end, on the top diameter
+        for x, z in on_taper + [(x, z) for x, z in points if abs(x - top) < 1e-6 and z > -1.0 + 1e-6]:
+            dx, dz = off_taper(x, z)
+            assert dz == pytest.approx(zc, abs=1.1e-4) and dx == pytest.approx(xc, abs=1.1e-4), (line, x, z)

@@ -7,13 +7,14 @@ seeded random differentials, ``SEEDS`` programs each (``POSTPROC_LATHE_DIFFERENT
 * LinuxCNC lathe programs (G0/G1, G2/G3 in ZX with I/K, straight and tapered ``G33 K``, G94/G95,
   ``G96 S D``/``G97``, G4) read by our linuxcnc dialect with a lathe set-up, move by move against rs274;
 * Fanuc T and GSK 980TDc programs (U/W, G02/G03 with R, ``G32``, ``G90``, ``G92``, ``G94``, the two-block
-  ``G76`` with and without its pull-out chamfer, ``G50 S`` with ``G96``, G98/G99), translated to LinuxCNC:
+  ``G76`` with and without its pull-out chamfer, ``G50 S`` with ``G96``, G98/G99 at the start and switched in
+  mid-program), translated to LinuxCNC:
   the source's toolpath against rs274 running the translation, and our reading of the translation too.
 
 Compared per move: end points and arc centres as radii (ours are diameters, ``x_mode``), the feed of a
-feed move (mm/rev or mm/min as programmed), and a thread move's lead: ours along its major axis (F, or
-``ThreadLead``), rs274's ``START_SPEED_FEED_SYNC`` along the path, converted with the move's own geometry
-(``postproc.geometry.thread_lead``). The done-when programs (the bundled Fanuc T and GSK examples) go the same way.
+feed move (mm/rev or mm/min as programmed) and its mode (per revolution or not: rs274's ``SET_FEED_MODE``),
+and a thread move's lead: ours along its major axis (F, or ``ThreadLead``), rs274's ``START_SPEED_FEED_SYNC``
+along the path, converted with the move's own geometry (``postproc.geometry.thread_lead``). The done-when programs (the bundled Fanuc T and GSK examples) go the same way.
 """
 
 from __future__ import annotations
@@ -59,11 +60,14 @@ def ours(text: str, dialect: str, setup: MachineSetup) -> list[dict[str, Any]]:
     """Our toolpath's moves as radii."""
     events = list(toolpath_events(io.StringIO(text), file="prog", dialect=dialect, setup=setup))
     assert events[0].get("x_mode") == "diameter"
+    header_mode = events[0].get("feed_mode", "per_min")
     moves = []
     for ev in events[1:]:
         if "move" not in ev:
             continue
         move = {k: float(v) / 2.0 if k in ("x", "cx") else v for k, v in ev.items()}
+        if move["move"] != "rapid":  # its feed mode: the one it states, else the header's
+            move["per_rev"] = move.pop("feed_mode", header_mode) == "per_rev"
         moves.append(move)
     return moves
 
@@ -72,7 +76,8 @@ def theirs(ngc: str) -> list[dict[str, Any]]:
     """rs274's moves, a synchronised move's lead along its major axis as ``f``."""
     moves: list[dict[str, Any]] = []
     pos: tuple[float, float] | None = None
-    for ev in canonical_moves(run_rs274(ngc, tool_table=TOOLS), start=(0.0, 0.0, 0.0), feeds=True, synced=True):
+    for ev in canonical_moves(run_rs274(ngc, tool_table=TOOLS), start=(0.0, 0.0, 0.0), feeds=True, synced=True,
+                              modes=True):
         if "move" not in ev:
             continue
         if "sync" in ev and pos is not None:
@@ -89,6 +94,9 @@ def difference(a: list[dict[str, Any]], b: list[dict[str, Any]], tolerance: floa
             return f"move {n}: ours {x}, rs274 {y}"
         keys = ["x", "z"] + (["cx", "cz"] if x["move"] in ("cw", "ccw") else []) + \
             (["f"] if x["move"] != "rapid" else [])
+        if x["move"] != "rapid" and "per_rev" in x and "per_rev" in y and x["per_rev"] != y["per_rev"]:
+            return f"move {n}: feeds per {'revolution' if x['per_rev'] else 'minute'} in ours, not in rs274's: " \
+                   f"ours {x}, rs274 {y}"
         dev = max(abs(float(x[k]) - float(y[k])) for k in keys)
         if dev > tolerance or math.isnan(dev):
             return f"move {n}: {dev:.6f} apart: ours {x}, rs274 {y}"
@@ -175,7 +183,13 @@ def fanuc_program(seed: int, gsk: bool) -> str:
     lines.append(f"G00 X{n(x0)} Z{n(z0)}")
     x, z = x0, z0
     for _ in range(rng.randint(3, 6)):
-        op = rng.choice(("feed", "incremental", "arc", "g32", "g90", "g94", "g92", "g76"))
+        op = rng.choice(("feed", "incremental", "arc", "g32", "g90", "g94", "g92", "g76", "mode"))
+        if op == "mode":  # the feed mode switched in mid-program, a feed in the new mode at once
+            per_rev = not per_rev
+            feed = (lambda: n(rng.choice((0.1, 0.2)))) if per_rev else (lambda: n(rng.choice((80., 300.))))
+            x, z = d(rng, 20, 70), d(rng, -50, 4)
+            lines += ["G99" if per_rev else "G98", f"G01 X{n(x)} Z{n(z)} F{feed()}"]
+            continue
         if op in ("g90", "g94", "g92", "g76"):
             lines.append(f"G00 X{n(x0)} Z{n(z0)}")
             x, z = x0, z0

@@ -23,9 +23,9 @@ from postproc.ir.lathe_sections import SpindleClamp, SpindleMode, ThreadLead
 from postproc.setup.machine_setup import InputSettings, MachineSetup, load_setup
 from postproc.simulate.verify import verify_lines
 from postproc.api import read_program
-from tests.support.rs274 import available
+from tests.support.rs274 import available, run_rs274
 from tests.test_lathe import SEED
-from tests.test_lathe_rs274 import difference, ours, theirs
+from tests.test_lathe_rs274 import TOOLS, difference, ours, theirs
 
 ROOT = Path(__file__).resolve().parents[1]
 SETUPS = ROOT / "examples" / "setups"
@@ -57,9 +57,55 @@ def test_done_when_lathe_programs_verify_and_run_in_rs274(dialect: str, setup: M
     report = verify_lines(io.StringIO(text), io.StringIO(ngc), file_in="in.nc", file_out="out.ngc", source=dialect,
                           target="linuxcnc", setup=setup, tolerance=0.0)
     assert report.ok and report.max_deviation == 0.0, report.summary()
+    # the spindle's speed, its mode (G96 / G97) and G96's clamp, which the path does not show, in force alike
+    # (verify lists a difference: ``test_verify_lists_a_lost_g96_and_a_lost_clamp``)
+    assert not [line for line in report.ignored if line.startswith("spindle")], report.summary()
     if available():
         problem = difference(ours(text, dialect, setup), theirs(ngc))
         assert problem is None, f"{problem}\n\n{ngc}"
+        assert spindle_modes_rs274(ngc) == spindle_modes_read(text, dialect, setup), ngc
+
+
+NO_CLAMP = 1e30
+"""rs274's ``SET_SPINDLE_MODE`` maximum for a G96 without D (it prints 1e30) [V: rs274 2.9, run here]."""
+
+
+def spindle_modes_rs274(ngc: str) -> list[float]:
+    """The spindle modes rs274 sets running ``ngc``: 0 for rpm (G97), else constant surface speed with that clamp
+    (``SET_SPINDLE_MODE(spindle css_maximum)``), repeats and the power-on rpm left out, and the program end's
+    reset to rpm (M2/M30 print ``SET_SPINDLE_MODE(0 0.0000)`` among their resets, M30 then ``PALLET_SHUTTLE()``,
+    before ``PROGRAM_END()`` [V: rs274 2.9, run here]) too: a Fanuc or GSK program has no such call to compare it
+    with."""
+    calls = run_rs274(ngc, tool_table=TOOLS)
+    end = next(i for i, call in enumerate(calls) if "PROGRAM_END" in call)
+    end = next(i for i in range(end - 1, end - 4, -1) if "SET_SPINDLE_MODE(0 0.0000)" in calls[i])
+    values = [float(call.split("(", 1)[1].split()[1].rstrip(")")) for call in calls[:end] if "SET_SPINDLE_MODE" in call]
+    return _changes([NO_CLAMP if v > 1e29 else v for v in values])
+
+
+def spindle_modes_read(text: str, dialect: str, setup: MachineSetup) -> list[float]:
+    """The same, from the source as its own dialect reads it: a clamp (Fanuc ``G50 S``, LinuxCNC ``D``) limits
+    constant surface speed only, from the G96 it is in force at [K: Fanuc 0i-TF, "Constant surface speed
+    control"; V: LinuxCNC G96 D]."""
+    css, clamp, values = False, NO_CLAMP, []
+    for block in read_program(io.StringIO(text), file="in.nc", dialect=dialect, setup=setup):
+        limit = block.sections.get("SpindleClamp")
+        if isinstance(limit, SpindleClamp):
+            clamp = float(limit.rpm)  # type: ignore[arg-type]
+        mode = block.sections.get("SpindleMode")
+        if isinstance(mode, SpindleMode):
+            css = mode.mode == "css"
+        if isinstance(limit, SpindleClamp) or isinstance(mode, SpindleMode):
+            values.append(clamp if css else 0.0)
+    return _changes(values)
+
+
+def _changes(values: list[float]) -> list[float]:
+    out: list[float] = []
+    for v in values:
+        if (out[-1] if out else 0.0) != v:
+            out.append(v)
+    return out
 
 
 def test_done_when_the_bundled_programs_carry_css_feed_per_rev_and_threads() -> None:
@@ -68,6 +114,55 @@ def test_done_when_the_bundled_programs_carry_css_feed_per_rev_and_threads() -> 
     assert all("G95" in text for name, text in outputs.items() if name.startswith("o2"))  # Fanuc T: G99
     for name in ("o2003_thread.nc", "o0103_thread.nc"):
         assert any(line.startswith("G33 ") and " K" in line for line in outputs[name].splitlines()), name
+
+
+CSS_SOURCE = "G50 S2500\nG96 S180 M03\nG00 X50. Z2.\nG01 X40. F0.2\nM30\n"
+"""Fanuc T: the clamp 2500 rpm, then constant surface speed 180 m/min (DIALECTS.md 2.2)."""
+CSS_KEPT = "G18 G7\nG21 G95\nG96 D2500 S180 M3\nG0 X50. Z2.\nG1 X40. F0.2\nM2\n"
+"""The same written by hand for LinuxCNC: ``G96 D.. S..``, D the clamp [V: LinuxCNC G-code reference, G96]."""
+
+
+@pytest.mark.parametrize("out, listed", [
+    (CSS_KEPT, []),
+    (CSS_KEPT.replace("G96 D2500 S180", "G97 S180"),
+     ["spindle speed clamp differs: IN 2500 rpm (line 1); OUT never set",
+      "spindle speed mode differs: IN constant surface speed (line 2); OUT rpm (line 3)"]),
+    (CSS_KEPT.replace("G96 D2500 S180", "G96 S180"), ["spindle speed clamp differs: IN 2500 rpm (line 1); OUT never set"]),
+    (CSS_KEPT.replace("D2500", "D3000"), ["spindle speed clamp differs: IN 2500 rpm (line 1); OUT 3000 rpm (line 3)"]),
+], ids=["kept", "g96-lost", "clamp-lost", "clamp-changed"])
+def test_verify_lists_a_lost_g96_and_a_lost_clamp(out: str, listed: list[str]) -> None:
+    """A translation that loses G96 or its clamp cuts the same path at another spindle speed: the path cannot show
+    it, so verify lists it as it lists a different S (docs/verify.md: listed, the exit status unchanged). Before
+    issue 29's audit a G97 in place of the G96 verified "ok" with nothing listed. Hand-written pairs."""
+    report = verify_lines(io.StringIO(CSS_SOURCE), io.StringIO(out), file_in="in.nc", file_out="out.ngc",
+                          source="fanuc", target="linuxcnc", setup=FANUC_T, tolerance=0.0)
+    assert report.ok and report.max_deviation == 0.0, report.summary()
+    assert [line for line in report.ignored if line.startswith("spindle")] == listed, report.summary()
+
+
+MODES_SOURCE = "G21 G99 G97 S500 M03\nG00 X50. Z2.\nG01 X40. F0.2\nG98\nG01 Z-10. F100.\nG99\nG01 X45. F0.1\nM30\n"
+"""Fanuc T: per revolution (G99), a feed per minute (G98) in the middle, per revolution again (DIALECTS.md 2.2)."""
+MODES_KEPT = "G18 G7\nG21 G95 G97 S500 M3\nG0 X50. Z2.\nG1 X40. F0.2\nG94\nG1 Z-10. F100.\nG95\nG1 X45. F0.1\nM2\n"
+"""The same written by hand for LinuxCNC (G95 per revolution, G94 per minute)."""
+
+
+@pytest.mark.parametrize("out, mismatch", [
+    (MODES_KEPT, None),
+    (MODES_KEPT.replace("G94\n", ""), "IN has feed per minute from here, OUT a feed to X40 Z-10 F100"),
+    (MODES_KEPT.replace("G95\nG1 X45.", "G1 X45."), "IN has feed per revolution from here, OUT a feed to X45 Z-10 F0.1"),
+    (MODES_KEPT.replace("G94\n", "").replace("G95\nG1 X45.", "G1 X45."),
+     "IN has feed per minute from here, OUT a feed to X40 Z-10 F100"),
+], ids=["kept", "g94-lost", "g95-lost", "both-lost"])
+def test_verify_sees_a_change_of_feed_mode_in_mid_program(out: str, mismatch: str | None) -> None:
+    """F100 per revolution where the source feeds 100 mm/min is a crash; until issue 29's audit verify compared a
+    move's F but not its feed mode after the header's, so every one of these verified "ok". Hand-written pairs."""
+    report = verify_lines(io.StringIO(MODES_SOURCE), io.StringIO(out), file_in="in.nc", file_out="out.ngc",
+                          source="fanuc", target="linuxcnc", setup=FANUC_T, tolerance=0.0)
+    assert report.mismatch == mismatch, report.summary()
+    assert report.ok == (mismatch is None)
+    if mismatch is None:
+        assert code_lines(write(MODES_SOURCE, "fanuc", FANUC_T))[3:8] == ["G1 X40. F0.2", "G94 F0.2",
+                                                                           "G1 Z-10. F100.", "G95 F100.", "G1 X45. F0.1"]
 
 
 # -- writing, by hand ----------------------------------------------------------------------------------

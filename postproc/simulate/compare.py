@@ -130,6 +130,9 @@ def describe(item: Move | Event) -> str:
         return "an optional stop" if item.get("optional") else "a program stop"
     if kind == "end":
         return "the program end"
+    if kind == FEED_MODE_EVENT:
+        mode = item.get("mode")
+        return f"feed {'per revolution' if mode == 'per_rev' else 'per minute' if mode == 'per_min' else mode} from here"
     return f"event {kind}"
 
 
@@ -162,8 +165,8 @@ def compare(events_in: Iterable[Event | MoveRecord], events_out: Iterable[Event 
     # feeds compared per minute: an inverse-time program and its translation for a target without G93
     # the paths compared are the controlled ones (``_controlled``): ``normalise`` reads a move's controlled
     # point in place, ``per_minute_from_first`` and ``_as_radius`` take it where they change the event
-    it_in = per_minute_from_first(iter(events_in), start_in)
-    it_out = per_minute_from_first(iter(events_out), start_out)
+    it_in: Iterator[Event | MoveRecord] = FeedModes(per_minute_from_first(iter(events_in), start_in))
+    it_out: Iterator[Event | MoveRecord] = FeedModes(per_minute_from_first(iter(events_out), start_out))
     head_in, head_out = _event(next(it_in, {})), _event(next(it_out, {}))  # (a header is a dictionary)
     modes = (head_in.get("x_mode"), head_out.get("x_mode"))
     if modes[0] != modes[1] or (chord_tolerance is not None and "diameter" in modes):
@@ -256,6 +259,63 @@ class PerMinute:
         if isinstance(ev, MoveRecord) or "move" in ev:  # (a record is a move: ``postproc.simulate.move_record``)
             self.last = ev
         return ev
+
+
+FEED_MODE_EVENT: Final = "feed mode"
+"""The event ``FeedModes`` puts before a feed move whose feed mode is not the one before it."""
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class FeedModes:
+    """A toolpath with a ``feed mode`` event before each feed move whose feed mode (per minute, per revolution) is
+    not the previous feed move's, so that the comparison sees a mode change as it sees a spindle or coolant
+    event: a move states its mode only where it is not the header's, and a normalised ``Move`` keeps its F but
+    not its mode. Without it a translation that lost a change of feed mode in mid-program (a Fanuc T ``G98`` before
+    ``F100.``) compared equal: F100 per revolution where the source feeds 100 mm/min (issue 29 audit). The header
+    passes first (its mode is compared as a header field); rapids state no mode and change none. After
+    ``per_minute_from_first``: inverse-time feeds are per minute by then. An iterator object: one more step an
+    event, no generator frame (``PerMinute``)."""
+
+    def __init__(self, events: Iterator[Event | MoveRecord]) -> None:
+        self.events = events
+        self.started = False
+        """The header has passed."""
+        self.header = "per_min"
+        """The header's feed mode (per minute where it states none): a feed move that states none is in it."""
+        self.stated: str | None = None
+        """The mode the last feed move stated (None: the header's, which a move does not state)."""
+        self.pending: Event | MoveRecord | None = None
+        """The feed move after the event just given."""
+
+    def __iter__(self) -> FeedModes:
+        return self
+
+    def __next__(self) -> Event | MoveRecord:
+        pending = self.pending
+        if pending is not None:
+            self.pending = None
+            return pending
+        item = pull_item(self.events)
+        if item is None:
+            raise StopIteration
+        if not self.started:
+            self.started = True
+            head = _event(item)
+            self.header = str(head.get("feed_mode") or "per_min")
+            return item
+        mode = _feed_mode(item)
+        if mode != self.stated:  # (most moves state none, as the one before: no event, no look at F)
+            if isinstance(item, MoveRecord):
+                line: Any = item.line
+                feeds = item.f is not None
+            else:
+                line = item.get("line")
+                feeds = "move" in item and item.get("f") is not None
+            if feeds:
+                self.stated = mode
+                self.pending = item
+                return {"line": line, "event": FEED_MODE_EVENT, "mode": self.header if mode is None else mode}
+        return item
 
 
 def _event(item: Event | MoveRecord) -> Event:

@@ -96,11 +96,14 @@ TOUCH_OFF = ("tool_entry_at_point", "tool_entry_at_point_9")
 """Tool tables whose length the tool's position decides: in the active work system, in work system 9."""
 
 UNSIMULATED = {"CutterCompensation": "cutter compensation", "WorkOffset": "work offset",
-               "PathControl": "path control", "SpindleSpeed": "spindle speed"}
+               "PathControl": "path control", "SpindleSpeed": "spindle speed",
+               "SpindleMode": "spindle speed mode", "SpindleClamp": "spindle speed clamp"}
 """Settings the simulation does not apply, by section key: ``verify`` compares their changes instead.
 Cutter compensation is among them only for a dialect without ``CUTTER_RULES``; the work offset is
 recorded although a G10's values are applied (the set-up's are not: the path stays in work
-coordinates)."""
+coordinates). A lathe's spindle speed mode (constant surface speed or rpm) and the clamp of constant surface
+speed are the spindle speed's meaning: a translation that lost a G96 or its clamp cuts the same path at
+another speed, so verify lists it as it lists a different S (issue 29)."""
 LATHE_TOOL_OFFSET: Final = "lathe tool offset"
 """The setting a lathe's tool offset selection is recorded as (``Moves.lathe_offset``)."""
 TOOL_LENGTH: Final = "tool length"
@@ -121,4 +124,8 @@ def _setting_text(key: str, section: Any) -> str | None:
         return str(section.index)
     if key == "PathControl":
         return None if section.one_shot else section.mode.replace("_", " ")
+    if key == "SpindleMode":
+        return "constant surface speed" if section.mode == "css" else "rpm"
+    if key == "SpindleClamp":
+        return f"{section.rpm:g} rpm" if isinstance(section.rpm, (int, float)) else None
     return f"S{section.rpm:g}" if isinstance(section.rpm, (int, float)) else None

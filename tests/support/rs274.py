@@ -199,7 +199,7 @@ def _mm(v: float, scale: float) -> float:
 
 
 def canonical_moves(lines: Iterable[str] | str, *, start: tuple[float, float, float] | None = None,
-                    feeds: bool = False, synced: bool = False) -> list[dict[str, Any]]:
+                    feeds: bool = False, synced: bool = False, modes: bool = False) -> list[dict[str, Any]]:
     """Parse canonical call lines (rs274 output or an ``expected`` file) into toolpath events (see module doc).
 
     With ``feeds``, feed moves and arcs carry ``"f"``: the last ``SET_FEED_RATE``, read in the units in
@@ -208,6 +208,10 @@ def canonical_moves(lines: Iterable[str] | str, *, start: tuple[float, float, fl
 
     With ``synced``, a spindle-synchronised feed (G33, G76: between ``START_SPEED_FEED_SYNC`` and
     ``STOP_SPEED_FEED_SYNCH``) carries ``"sync"``: its distance per revolution along the path, in mm.
+
+    With ``modes``, feed moves and arcs carry ``"per_rev"``: whether the feed is per revolution, the last
+    ``SET_FEED_MODE(spindle, mode)`` (mode 1 under G95, 0 under G94 and G93 [V: rs274 2.9, run here]) or a
+    spindle-synchronised move.
 
     ``start`` is the position in mm (canonical frame) before the first call; by default it is unknown, so the first straight move is never dropped as zero-length and an arc as the
     very first motion takes its normal-axis centre from its end point. (Standalone rs274 starts at 0, 0, 0.)
@@ -224,6 +228,7 @@ def canonical_moves(lines: Iterable[str] | str, *, start: tuple[float, float, fl
     feed: float | None = None  # mm per minute (or per rev)
     sync: float | None = None  # the pitch of a spindle-synchronised move (START_SPEED_FEED_SYNC), mm
     in_sync = False  # between START_SPEED_FEED_SYNC and STOP_SPEED_FEED_SYNCH
+    per_rev = False  # the last SET_FEED_MODE's: G95
     for line in lines:
         m = _CALL.match(line)
         if not m:
@@ -233,6 +238,8 @@ def canonical_moves(lines: Iterable[str] | str, *, start: tuple[float, float, fl
             scale = _UNIT_SCALE.get(args, scale)
         elif name == "SET_FEED_RATE":
             feed = _numbers(args)[0] * scale
+        elif name == "SET_FEED_MODE":
+            per_rev = _numbers(args)[-1] == 1
         elif name == "START_SPEED_FEED_SYNC":
             sync = _numbers(args)[0] * scale
             in_sync = True
@@ -260,6 +267,8 @@ def canonical_moves(lines: Iterable[str] | str, *, start: tuple[float, float, fl
                 events[-1]["f"] = round(feed, PLACES)
             if synced and in_sync and name == "STRAIGHT_FEED" and sync is not None:
                 events[-1]["sync"] = round(abs(sync), PLACES)
+            if modes and name == "STRAIGHT_FEED":
+                events[-1]["per_rev"] = per_rev or in_sync
         elif name == "ARC_FEED":
             v = _numbers(args)
             first, second, c_first, c_second, rotation, normal_end = v[:6]
@@ -278,6 +287,8 @@ def canonical_moves(lines: Iterable[str] | str, *, start: tuple[float, float, fl
                 ev["turns"] = turns
             if feeds and feed is not None:
                 ev["f"] = round(feed, PLACES)
+            if modes:
+                ev["per_rev"] = per_rev or in_sync
             events.append(ev)
             pos = (end[0] * scale, end[1] * scale, end[2] * scale)
         elif name == "DWELL":
