@@ -96,6 +96,14 @@ class _CloseFullCircles(BlockStep):
         back = self.circles.close(block)  # before the block goes on: the next step sees it closed
         return None if back is None else [block, back]
 
+    def take_move(self, block: Block) -> list[Block] | None:
+        """``take`` for a block that is only a move (``only_move``: no plane or distance mode to follow): only
+        an arc may be a full circle to close."""
+        arc = block.sections["Motion"]
+        if not isinstance(arc, Motion) or (arc.mode != "cw" and arc.mode != "ccw"):
+            return None
+        return self.take(block)
+
 
 @mypyc_attr(allow_interpreted_subclasses=True)
 class LowerForLeanController(LoweringStep):
