@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Final, Iterator
+from typing import Any, Final, Iterator
 
 from mypy_extensions import mypyc_attr
 
@@ -166,8 +166,9 @@ class _Arcs(BlockStep):
                 mode = motion.mode
                 if mode == "linear" or mode == "rapid":
                     position = rewriter.position
-                    for axis, value in motion.axes.items():
-                        position[axis] = value if isinstance(value, float) or not isinstance(value, Expr) else None
+                    axes: dict[str, Any] = motion.axes  # (Any: compiled, a value narrowed to float was unboxed and boxed again)
+                    for axis, value in axes.items():
+                        position[axis] = None if isinstance(value, Expr) else value
                     return None
         return self.take(block)
 
