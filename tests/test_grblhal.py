@@ -95,6 +95,15 @@ def test_cycles_that_move_alike_stay_native(fanuc: str, expected: str) -> None:
     assert to_grblhal(fanuc) == expected
 
 
+def test_a_straight_move_of_the_fast_lane_ends_the_cycle_too() -> None:
+    """A motion code ends a native cycle on grblHAL [V: ``gcode.c``]: a straight block the fast lane writes
+    (``postproc.fast``, ``GrblhalWriter.after_block``) as a block the section dispatch writes, so the G80 after
+    it has no cycle to cancel (its source as a trace), and the G80 of a cycle still in force is a bare G0."""
+    text = to_grblhal("G99 G81 X10. Y10. Z-5. R2. F100.\nG00 X0.\nG80\nG81 X10. Y10. Z-5. R2.\nX20.\nG80\nM30\n")
+    assert text == ("G99 G81 X10. Y10. Z-5. R2. F100.\nG0 X0.\n(G80)\nG81 X10. Y10. Z-5. R2.\nX20.\nG0\n"
+                    "M30\n")
+
+
 @pytest.mark.parametrize("fanuc, line", [
     # the tool below R: Fanuc positions at its level, grblHAL rises to R first
     ("G00 Z1.\nG98 G81 X10. Y10. Z-5. R2. F100.\nG80\nM30\n", 3),

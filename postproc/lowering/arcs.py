@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Final, Iterator
+from typing import Any, Final, Iterator
 
 from mypy_extensions import mypyc_attr
 
@@ -53,6 +53,9 @@ MIN_TOLERANCE_MM = 1e-4
 """Finest chord tolerance accepted: below it the written numbers' rounding (``EXACT``) is no longer small."""
 R_FORM_TOLERANCE_MM = 0.0005
 """Most an R form may move an arc's centre (half of ``verify``'s default tolerance)."""
+CLEAR_HALF_CHORD_MM: Final = 1e-3
+"""Shortest half chord ``_Rewriter._short_of_half_turn`` judges (a shorter one, a full circle's among them, takes the
+general test)."""
 WRITE_SLACK_MM = 2 * EXACT
 """What the writer's rounding may move a point (``postproc.numbers.EXACT``, at both ends of a chord)."""
 ARCS: Final = frozenset(("cw", "ccw"))
@@ -148,8 +151,28 @@ class _Arcs(BlockStep):
             else:
                 ctx.diagnostics.error(located)
             rewriter.unknown()
+            rewriter.settle_plain()
             return None
+        rewriter.settle_plain()
         return None if len(out) == 1 and out[0] is block else out
+
+    def take_move(self, block: Block) -> list[Block] | None:
+        """``take`` for a block that is only a move (``only_move``): a straight move while the position is
+        plain (``_Rewriter.plain``) only moves the position to its words, as ``_track`` does (~2.5k instructions
+        a block compiled through ``take``, ``block`` and ``_track``: this pass runs over every block of every
+        translation to grbl); anything else goes through ``take``."""
+        rewriter = self.rewriter
+        if rewriter.plain:
+            motion = block.sections["Motion"]
+            if isinstance(motion, Motion):
+                mode = motion.mode
+                if mode == "linear" or mode == "rapid":
+                    position = rewriter.position
+                    axes: dict[str, Any] = motion.axes  # (Any: compiled, a value narrowed to float was unboxed and boxed again)
+                    for axis, value in axes.items():
+                        position[axis] = None if isinstance(value, Expr) else value
+                    return None
+        return self.take(block)
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -173,6 +196,17 @@ class _Rewriter:
         self.scaling = False
         self.restate = False
         """An arc became lines: the next move is written from its sections (a modal G2 it relied on is gone)."""
+        self.position = self.state.position
+        """``state.position`` (the same dictionary, which nothing replaces)."""
+        self.plain = False
+        """A straight move that is the whole block (``only_move``) only moves the position to its words: not in
+        a kept cycle's profile, no move to restate, absolute words, no increment addresses (``settle_plain``)."""
+        self.settle_plain()
+
+    def settle_plain(self) -> None:
+        """Say again whether a straight move is plain (``plain``), after a block that may have changed that."""
+        self.plain = not self.in_profile and not self.restate and self.state.distance != "incremental" \
+            and not self.ctx.increments
 
     def unknown(self, axes: object = None) -> None:
         """The position is not known (on ``axes``, default all) until programmed absolutely again."""
@@ -361,7 +395,7 @@ class _Rewriter:
         ``R_FORM_TOLERANCE_MM`` (an arc within reach of 180 degrees); else left as it is."""
         slack_share = self.target.R_ARC_FLOAT_SLACK
         if not slack_share or machine or self.state.extra.get("polar") or isinstance(motion.radius, Expr) or any(
-                isinstance(v, Expr) for v in motion.axes.values()):
+                isinstance(v, Expr) for v in motion.axes.values()) or self._short_of_half_turn(motion, incremental, slack_share):
             self._track(motion, incremental, machine)
             return None
         a1, a2, _ = PLANE_AXES[self.state.plane]
@@ -380,6 +414,35 @@ class _Rewriter:
                                   (arc.centre[0] - arc.start[0], arc.centre[1] - arc.start[1]), None)]
         geometry.finish()
         return motions
+
+    def _short_of_half_turn(self, motion: Motion, incremental: bool, slack_share: float) -> bool:
+        """The R arc (its words numbers) is clearly short of half a turn: R rounded by ``slack`` either way
+        moves its centre less than half of ``R_FORM_TOLERANCE_MM``, so it stays as it is, and only its
+        position is followed (the general test builds the arc and its centre three times: ~60k instructions
+        an R arc compiled). Asked only where the words are the position (absolute, no increment addresses, no
+        diameter) and the start is known; False sends the arc to the general test. The centre lies ``sqrt(R^2 - h^2)`` from the chord's
+        middle (h half the chord), concave in R: R smaller by the slack moves it most
+        (``arc_geometry.r_centre_error``'s worst trial), the bound with a margin of half the tolerance for the
+        rounding of the general test."""
+        if incremental or self.diameter or self.ctx.increments:
+            return False
+        a1, a2, _ = PLANE_AXES[self.state.plane]
+        position = self.position
+        s1, s2 = position.get(a1), position.get(a2)
+        radius = motion.radius
+        if s1 is None or s2 is None or not isinstance(radius, (int, float)):
+            return False
+        e1, e2 = motion.axes.get(a1, s1), motion.axes.get(a2, s2)
+        if not isinstance(e1, (int, float)) or not isinstance(e2, (int, float)):
+            return False
+        mm = self._mm()
+        half = math.hypot(e1 - s1, e2 - s2) * mm / 2.0
+        r = abs(float(radius)) * mm
+        low = r - (WRITE_SLACK_MM + r * slack_share)
+        if half < CLEAR_HALF_CHORD_MM or low <= half:
+            return False
+        return math.sqrt((r - half) * (r + half)) - math.sqrt((low - half) * (low + half)) \
+            <= R_FORM_TOLERANCE_MM / 2.0
 
     def _r_form(self, block: Block, arc: Arc, geometry: "_Geometry", mode: str) -> list[Motion] | None:
         mm = self._mm()

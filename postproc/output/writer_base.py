@@ -128,8 +128,11 @@ class Writer(abc.ABC):
             emit = line_format.wrap(emit)
         generated = sequences.per_block
         displacement = None
+        dropped: list[int] = []
+        """The source lines whose moves a lowering step dropped (``DROPPED_MOVES``, the list the step appends to)."""
         if self.ctx.on_unsupported == "warn":
             displacement = self.displacement = Displacement(self.ctx.increments, self.ctx.axis_words)
+            dropped = self.ctx.run_data.setdefault(DROPPED_MOVES, [])
         footer: str | None = None
         started = False
         line = 0
@@ -149,8 +152,9 @@ class Writer(abc.ABC):
                 self._emit_template(emit, output_map, line_format, getattr(text_of, "template"), getattr(text_of, "text"))
                 continue
             failed = False
-            if displacement is not None and _displaced(self, displacement, block):
-                continue
+            if displacement is not None and (displacement.axes or dropped or "DistanceMode" in block.sections) \
+                    and _displaced(self, displacement, block, dropped):
+                continue  # (the common block, no axis displaced, nothing dropped, is not _displaced's: no call)
             try:
                 text = lane.write(block) if lane is not None and block.canonical else None
                 if text is None:
@@ -254,13 +258,13 @@ class Writer(abc.ABC):
         return ""
 
 
-def _displaced(writer: Writer, displacement: Displacement, block: Block) -> bool:
+def _displaced(writer: Writer, displacement: Displacement, block: Block, lowered: list[int]) -> bool:
     """Follow the distance mode; True (an error reported) where ``block`` would move displaced by a
-    move dropped before it. A function, not a method: compiled, a method of a class that plugins subclass is
-    called through Python's lookup (~900 instructions a block of every ``--on-unsupported warn`` run)."""
+    move dropped before it (``lowered``: the source lines whose moves a lowering step dropped, not yet taken).
+    A function, not a method: compiled, a method of a class that plugins subclass is called through Python's
+    lookup (~900 instructions a block of every ``--on-unsupported warn`` run)."""
     if "DistanceMode" in block.sections:
         displacement.note(block.sections)
-    lowered = writer.ctx.run_data.get(DROPPED_MOVES)
     if lowered:
         displacement.lowered(lowered)  # (the block itself is the comment the step left: it moves nothing)
     if not displacement.axes:

@@ -96,6 +96,14 @@ class _CloseFullCircles(BlockStep):
         back = self.circles.close(block)  # before the block goes on: the next step sees it closed
         return None if back is None else [block, back]
 
+    def take_move(self, block: Block) -> list[Block] | None:
+        """``take`` for a block that is only a move (``only_move``: no plane or distance mode to follow): only
+        an arc may be a full circle to close."""
+        arc = block.sections["Motion"]
+        if not isinstance(arc, Motion) or (arc.mode != "cw" and arc.mode != "ccw"):
+            return None
+        return self.take(block)
+
 
 @mypyc_attr(allow_interpreted_subclasses=True)
 class LowerForLeanController(LoweringStep):
@@ -132,6 +140,19 @@ class _Lean(BlockStep):
             if pauses is not None:
                 pauses.follow(sections["CompoundMotion"])
             return None
+        return self._rewrite(block)
+
+    def take_move(self, block: Block) -> list[Block] | None:
+        """``take`` for a block that is only a move (``only_move``: none of ``_LEAN_WATCHED`` is there, not
+        asked again): only an arc may be a full circle to close."""
+        arc = block.sections["Motion"]
+        if not isinstance(arc, Motion) or (arc.mode != "cw" and arc.mode != "ccw"):
+            return None  # a straight move: no step changes it
+        return self._rewrite(block)
+
+    def _rewrite(self, block: Block) -> list[Block]:
+        """What the four steps make of a block that may be their business."""
+        pauses = self.pauses
         paused = pauses.split(block) if pauses is not None else [block]
         made: list[Block] = []
         circles = self.circles

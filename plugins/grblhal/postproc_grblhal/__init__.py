@@ -85,6 +85,8 @@ class Grblhal(GrblFamily):
     WRITER = Lazy[type[Writer]](".writer:GrblhalWriter")
     LATHE_WRITER = Lazy[type[Writer]](".lathe_writer:GrblhalLatheWriter")
     """The writer of a lathe program (``writer_class``)."""
+    OWN_WRITER = Lazy[type[Writer]](".writer:GrblhalOwnWriter")
+    """The writer of a grblHAL mill program written back to grblHAL (``writer_class``)."""
     PIPELINE_FILE = "grblhal.xml"
     CYCLE_WORDS = rs274_cycle_words(CODES, ("L",))
     """R level, P dwell (seconds), L repeats."""
@@ -172,8 +174,11 @@ class Grblhal(GrblFamily):
 
     @classmethod
     def writer_class(cls, ctx: Context) -> type[Writer] | None:
-        """``LATHE_WRITER`` for a lathe program (grblHAL's lathe mode), else ``WRITER``."""
-        return cls.LATHE_WRITER if ctx.lathe else cls.WRITER
+        """``LATHE_WRITER`` for a lathe program (grblHAL's lathe mode), ``OWN_WRITER`` for a grblHAL program
+        (its copied blocks end a generated cycle: ``writer.GrblhalOwnWriter``), else ``WRITER``."""
+        if ctx.lathe:
+            return cls.LATHE_WRITER
+        return cls.OWN_WRITER if ctx.dialect == cls.NAME else cls.WRITER
 
     @classmethod
     def tool_table(cls, setup: MachineSetup) -> bool:

@@ -32,6 +32,7 @@ class GrblhalLatheWriter(NgcLatheWriting, GrblhalWriter):
 
     def write_block(self, block: Block) -> str | None:
         self.refuse_css_with_spindle_stopped(block)
+        self.end_cycle(block)  # (a copied block too, as ``GrblhalOwnWriter``)
         return super().write_block(block)
 
     def refuse_css_with_spindle_stopped(self, block: Block) -> None:

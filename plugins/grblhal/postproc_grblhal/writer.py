@@ -93,6 +93,8 @@ class GrblhalWriter(GrblFamilyWriter):
         super().__init__(ctx, source_dialect, target)
         self.cycle_motion: str | None = None
         """The group-01 mode around the native cycle in force on the controller; None: none in force."""
+        self.cycle_block: Block | None = None
+        """The block whose cycle words set ``cycle_motion``, until ``after_block`` has seen it."""
         self.subs: set[str] = set()
         """The numbered subs whose definition is written (a call finds only those on grblHAL)."""
         self.body: str | None = None
@@ -103,11 +105,23 @@ class GrblhalWriter(GrblFamilyWriter):
         """The o-word statements written, nested as grblHAL nests them (its flow control stack); made at the
         first (the structure check imports the evaluator, which a program without statements never needs)."""
 
-    def write_block(self, block: Block) -> str | None:
+    def after_block(self, block: Block) -> None:
+        """A motion code of group 01 ends the native cycle on grblHAL (``cycle_motion``): followed after each block
+        written while a cycle is in force (``after_blocks``), but for the block that wrote the cycle itself (a
+        block's cycle words leave their cycle in force whatever its motion). Following it here, not in an
+        override of ``write_block``, leaves the writer the word writer's own ``write_block``, so a straight block
+        takes the fast lane (``postproc.fast.lane``: grblHAL's every block went through the section dispatch)."""
+        if self.cycle_block is block:
+            self.cycle_block = None
+        else:
+            self.end_cycle(block)
+        self.after_blocks = self.cycle_motion is not None
+
+    def end_cycle(self, block: Block) -> None:
+        """The block's group-01 motion code ends the native cycle in force."""
         motion = block.sections.get("Motion")
         if isinstance(motion, Motion) and motion.mode in GROUP_01:
-            self.cycle_motion = None  # the motion code ends the cycle on grblHAL
-        return super().write_block(block)
+            self.cycle_motion = None
 
     def cycle_cancel_words(self, s: Any, block: Block) -> list[str]:
         """Nothing where no native cycle is in force; else the motion code the source returns to (module
@@ -216,6 +230,8 @@ class GrblhalWriter(GrblFamilyWriter):
         """The cycle as programmed (from grblHAL itself), or by its words' roles with what grblHAL needs
         added (module docstring)."""
         self.cycle_motion = s.motion or "rapid"
+        self.cycle_block = block
+        self.after_blocks = True  # (``after_block``: until a motion code ends the cycle)
         if self.source_dialect == self.DIALECT:
             return super().canned_cycle_words(s, block)
         words: list[str] = []
@@ -240,3 +256,13 @@ class GrblhalWriter(GrblFamilyWriter):
         order = {letter: at for at, letter in enumerate(WORD_ORDER)}
         head = words[:1] if s.call else []
         return head + sorted(words[len(head):], key=lambda word: order.get(word[0], len(order)))
+
+
+class GrblhalOwnWriter(GrblhalWriter):
+    """The writer of a grblHAL program written back to grblHAL: its blocks are copied or normalised from their
+    words, not generated (``words_block``), so ``after_block`` does not see them, and a copied motion code that
+    ends a cycle a generated block wrote is followed as the block is taken (``Grblhal.writer_class``)."""
+
+    def write_block(self, block: Block) -> str | None:
+        self.end_cycle(block)
+        return super().write_block(block)
