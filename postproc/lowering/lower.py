@@ -85,64 +85,42 @@ class Steps(BlockStep):
     def __init__(self, steps: list[BlockStep]) -> None:
         super().__init__()
         self.steps = steps
+        self.walk = Walk(steps)
         self.moves = any(step.moves for step in steps)
 
     def take(self, block: Block) -> list[Block] | None:
-        made = list(_onward(block, self.steps, 0))
+        walk = self.walk
+        one = walk.through(block, 0)
+        made = [one] if one is not None else list(walk.given())
         self.moves = any(step.moves for step in self.steps)
         return None if len(made) == 1 and made[0] is block else made
 
     def finish(self) -> list[Block]:
+        return list(self.walk.finish())
+
+
+class Walk:
+    """The one walk of blocks through a group of ``BlockStep``s, in order, as the chain of their generators
+    would pass them: a block a step expands goes on, block by block, to the next step before the step's next
+    block; at the end each step's held blocks (``finish``) go through the steps after it, the first step's
+    first. ``through`` walks one block as far as it goes alone (every block of most programs: no generator
+    and no list); ``given`` and ``onward`` go on from where a step gave several blocks or none."""
+
+    def __init__(self, steps: list[BlockStep]) -> None:
+        self.steps = steps
+        self.made: list[Block] = []
+        """What the step before ``at`` gave, where ``through`` stopped (None returned)."""
+        self.at = 0
+
+    def through(self, block: Block, start: int) -> Block | None:
+        """``block`` through the steps from ``start`` on: the block that comes out of the last, or None where a
+        step gave several blocks or none (``made``, to go on from step ``at``: ``given``). A block that is only
+        a move (``only_move``, asked once a block, and again only for a block a step put in its place) skips a
+        step whose ``moves`` is False and goes to the others' ``take_move``."""
         steps = self.steps
-        made: list[Block] = []
-        for k in range(len(steps)):
-            for held in steps[k].finish():
-                made.extend(_onward(held, steps, k + 1))
-        return made
-
-
-def register_transform(transform: Lowering) -> Lowering:
-    """Add a generic step to ``TRANSFORMS`` (idempotent)."""
-    if transform not in TRANSFORMS:
-        TRANSFORMS.append(transform)
-    return transform
-
-
-def lower_for(blocks: Iterator[Block], ctx: Context, target: type[Dialect], on_unsupported: str,
-              steps: Sequence[Lowering] | None = None, then: Sequence[Lowering] = ()) -> Iterator[Block]:
-    """Apply the generic steps (``steps``, by default the default registry's), then the target's own, then
-    ``then`` (a run's own last steps: ``translate``'s arc pass); consecutive ``LoweringStep``s run as one
-    loop (``run_blocks``)."""
-    ctx.on_unsupported = on_unsupported
-    stream = blocks
-    group: list[BlockStep] = []
-    for transform in [*(TRANSFORMS if steps is None else steps), *target.LOWERING, *then]:
-        if isinstance(transform, LoweringStep):
-            run = transform.start(ctx, target)
-            if run is not None:
-                group.append(run)
-            continue
-        if group:
-            stream = run_blocks(stream, group)
-            group = []
-        stream = transform(stream, ctx, target)
-    if group:
-        stream = run_blocks(stream, group)
-    return stream
-
-
-def run_blocks(blocks: Iterator[Block], steps: list[BlockStep]) -> Iterator[Block]:
-    """Every block through ``steps`` in order, as the chain of their generators would pass it: a block a
-    step expands goes on, block by block, to the next step before the step's next block; at the end each
-    step's held blocks (``finish``) go through the steps after it, the first step's first. (``_onward`` repeats
-    this loop for a made block: one loop over a stack of made blocks, fed by ``next(blocks, None)``, measured
-    ~1.9k instructions a block more compiled, ``fanuc linuxcnc 0``: mypyc calls ``next`` as a builtin looked up
-    by name, where a ``for`` loop steps the iterator natively.)"""
-    n = len(steps)
-    for block in blocks:
+        n = len(steps)
         plain = only_move(block.sections)
-        i = 0
-        through = True
+        i = start
         while i < n:
             step = steps[i]
             i += 1
@@ -158,38 +136,79 @@ def run_blocks(blocks: Iterator[Block], steps: list[BlockStep]) -> Iterator[Bloc
                 block = out[0]
                 plain = only_move(block.sections)
                 continue
-            through = False
-            for made in out:
-                yield from _onward(made, steps, i)
-            break
-        if through:
-            yield block
-    for k in range(n):
-        for made in steps[k].finish():
-            yield from _onward(made, steps, k + 1)
+            self.made = out
+            self.at = i
+            return None
+        return block
 
+    def given(self) -> Iterator[Block]:
+        """The blocks where ``through`` stopped, each through the steps after the one that gave them."""
+        made = self.made
+        at = self.at
+        for block in made:
+            yield from self.onward(block, at)
 
-def _onward(block: Block, steps: list[BlockStep], start: int) -> Iterator[Block]:
-    """``block``, made by step ``start - 1``, through the steps from ``start`` on (``run_blocks``'s loop)."""
-    n = len(steps)
-    plain = only_move(block.sections)
-    i = start
-    while i < n:
-        step = steps[i]
-        i += 1
-        if plain:
-            if not step.moves:
-                continue
-            out = step.take_move(block)
+    def onward(self, block: Block, start: int) -> Iterator[Block]:
+        """What comes out of the last step for ``block`` walked from step ``start`` on."""
+        one = self.through(block, start)
+        if one is not None:
+            yield one
         else:
-            out = step.take(block)
-        if out is None:
+            yield from self.given()
+
+    def finish(self) -> Iterator[Block]:
+        """At the end: each step's held blocks through the steps after it, the first step's first."""
+        steps = self.steps
+        for k in range(len(steps)):
+            for held in steps[k].finish():
+                yield from self.onward(held, k + 1)
+
+
+def register_transform(transform: Lowering) -> Lowering:
+    """Add a generic step to ``TRANSFORMS`` (idempotent)."""
+    if transform not in TRANSFORMS:
+        TRANSFORMS.append(transform)
+    return transform
+
+
+def lower_for(blocks: Iterator[Block], ctx: Context, target: type[Dialect], on_unsupported: str,
+              steps: Sequence[Lowering] | None = None, then: Sequence[Lowering] = ()) -> Iterator[Block]:
+    """Apply the generic steps (``steps``, by default the default registry's), then the target's own, then
+    ``then`` (a run's own last steps: ``translate``'s arc pass); consecutive ``LoweringStep``s run as one
+    loop (``run_blocks``). A function step that gives back the stream it was given has nothing to do in this
+    program (``convert_inverse_time`` where nothing is in inverse time...): it does not split the loop, whose
+    every level would cost each block a generator's resumption and another ``only_move`` (~700 instructions
+    compiled, four such levels in a translation to LinuxCNC)."""
+    ctx.on_unsupported = on_unsupported
+    stream = blocks
+    group: list[BlockStep] = []
+    for transform in [*(TRANSFORMS if steps is None else steps), *target.LOWERING, *then]:
+        if isinstance(transform, LoweringStep):
+            run = transform.start(ctx, target)
+            if run is not None:
+                group.append(run)
             continue
-        if len(out) == 1:
-            block = out[0]
-            plain = only_move(block.sections)
+        if not group:
+            stream = transform(stream, ctx, target)
             continue
-        for made in out:
-            yield from _onward(made, steps, i)
-        return
-    yield block
+        grouped = run_blocks(stream, group)  # (a generator: nothing runs until the first block is asked)
+        made = transform(grouped, ctx, target)
+        if made is grouped:
+            continue  # nothing to do in this program (asked once, here): the loop goes on past it
+        stream = made
+        group = []
+    if group:
+        stream = run_blocks(stream, group)
+    return stream
+
+
+def run_blocks(blocks: Iterator[Block], steps: list[BlockStep]) -> Iterator[Block]:
+    """Every block through ``steps`` in order (``Walk``), then what they still hold."""
+    walk = Walk(steps)
+    for block in blocks:
+        one = walk.through(block, 0)
+        if one is not None:
+            yield one
+        else:
+            yield from walk.given()
+    yield from walk.finish()
