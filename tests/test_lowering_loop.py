@@ -125,13 +125,41 @@ class _MoveLog(_Log):
 
 def test_a_block_only_a_move_goes_to_take_move_once_it_is_one() -> None:
     """The loop asks ``only_move`` once and hands such a block to ``take_move``, any other to ``take``; the blocks
-    a step makes are asked again on their way through the later steps (``_onward``)."""
+    a step makes are asked again on their way through the later steps (``Walk.onward``)."""
     seen: list[str] = []
     a = _Log("a", seen, twice="p")
     b = _MoveLog("b", seen)
     out = _texts(run_blocks(iter([_block("p", True), _block("q", False)]), [a, b]))
     assert out == ["p", "p'", "q"]
     assert seen == ["a:p", "b-move:p", "b:p", "b-move:p'", "b:p'", "a:q", "b:q", "a:end", "b:end"]
+
+
+class _Tags(_Log):
+    """A ``_Log`` that puts a comment section on the block named ``tag``, in place (returning None), as
+    ``length_timing`` puts a waiting length change on the next move."""
+
+    def __init__(self, name: str, seen: list[str], tag: str) -> None:
+        super().__init__(name, seen)
+        self.tag = tag
+
+    def take(self, block: Block) -> list[Block] | None:
+        self.seen.append(f"{self.name}:{block.text}")
+        if block.text == self.tag:
+            block.sections["Comments"] = Comments(["tagged"])
+        return None
+
+
+def test_a_move_changed_in_place_is_no_longer_taken_as_only_a_move() -> None:
+    """A step that skips plain moves (``moves`` False) still sees a move an earlier step changed in place into
+    something more, and a later step gets it through ``take``, not ``take_move``: by hand, ``p`` tagged by ``a``
+    goes to ``b`` and ``c`` as a block with a comment; ``q`` stays a plain move (``b`` skips it)."""
+    seen: list[str] = []
+    a = _Tags("a", seen, tag="p")
+    b = _Log("b", seen, moves=False)
+    c = _MoveLog("c", seen)
+    out = _texts(run_blocks(iter([_block("p", True), _block("q", True)]), [a, b, c]))
+    assert out == ["p", "q"]
+    assert seen == ["a:p", "b:p", "c:p", "a:q", "c-move:q", "c:q", "a:end", "b:end", "c:end"]
 
 
 def test_steps_run_as_one_step_as_they_run_in_the_loop() -> None:

@@ -67,9 +67,18 @@ class _Entries(BlockStep):
         self.run = _Run(ctx)
 
     def take(self, block: Block) -> list[Block] | None:
+        return self._take(block, watches_none(block.sections, _WATCHED))
+
+    def take_move(self, block: Block) -> list[Block] | None:
+        """``take`` for a block the loop found only a move (``only_move``): it holds none of ``_WATCHED``, and is
+        not asked again (~270 instructions a block compiled)."""
+        return self._take(block, True)
+
+    def _take(self, block: Block, quiet: bool) -> list[Block] | None:
+        """``take``; ``quiet``: the block holds none of ``_WATCHED`` (``watches_none``)."""
         s = block.sections
         run = self.run
-        if not run.homed and watches_none(s, _WATCHED):
+        if not run.homed and quiet:
             m = s.get("Motion")
             if m is None or isinstance(m, Motion) and m.mode not in _HOME:
                 return None  # the common block: the frame evaluation follows its point

@@ -339,12 +339,21 @@ class Resolution(BlockStep):
         """The program's last block: where an error found at its end (``finish``) is located."""
 
     def take(self, block: Block) -> list[Block] | None:
+        return self._take(block, False)
+
+    def take_move(self, block: Block) -> list[Block] | None:
+        """``take`` for a block the loop found only a move (``only_move``, not asked again: ~270 instructions a
+        block compiled)."""
+        return self._take(block, True)
+
+    def _take(self, block: Block, moved: bool) -> list[Block] | None:
+        """``take``; ``moved``: the block is only a move (``only_move``), known to the caller."""
         r = self.resolver
         self.last = block
         sections = block.sections
         plain = self.idle
         odd = False
-        if plain and not only_move(sections):  # one look at the keys: none asks for the general way
+        if plain and not moved and not only_move(sections):  # one look at the keys: none asks for the general way
             for key in sections:
                 if key in _NOT_NOTED:
                     odd = True

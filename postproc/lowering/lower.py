@@ -115,8 +115,9 @@ class Walk:
     def through(self, block: Block, start: int) -> Block | None:
         """``block`` through the steps from ``start`` on: the block that comes out of the last, or None where a
         step gave several blocks or none (``made``, to go on from step ``at``: ``given``). A block that is only
-        a move (``only_move``, asked once a block, and again only for a block a step put in its place) skips a
-        step whose ``moves`` is False and goes to the others' ``take_move``."""
+        a move (``only_move``) skips a step whose ``moves`` is False and goes to the others' ``take_move``; it is
+        asked again after each step that took it, since a step may change it in place (``length_timing`` puts a
+        waiting length change on the next move): a later step must not skip it, nor take it as only a move."""
         steps = self.steps
         n = len(steps)
         plain = only_move(block.sections)
@@ -131,6 +132,8 @@ class Walk:
             else:
                 out = step.take(block)
             if out is None:
+                if plain:  # asked again: a step may have changed the block in place (a length change put on it)
+                    plain = only_move(block.sections)
                 continue
             if len(out) == 1:
                 block = out[0]
