@@ -26,7 +26,7 @@ from ..ir.state import PLANE_AXES
 from .cutter_moves import CompensatedMoves
 from .cutter_point import MM_PER_INCH, MOVES, Unresolvable, UnknownHere
 from .rule_trial import STAND_IN_RADIUS, STRETCH_LIMIT, RuleTrial
-from .lower import BlockStep, run_blocks
+from .lower import BlockStep, run_blocks, still_moving
 
 Keeps = Callable[["Resolver", CutterCompensation], bool]
 """Whether the target writes a G41/G42 itself (given the resolver, for the tool data it tracks)."""
@@ -343,8 +343,11 @@ class Resolution(BlockStep):
 
     def take_move(self, block: Block) -> list[Block] | None:
         """``take`` for a block the loop found only a move (``only_move``, not asked again: ~270 instructions a
-        block compiled)."""
-        return self._take(block, True)
+        block compiled). An idle resolver only notes or tracks the move, unless it writes the feed back in
+        inverse time (``still_moving`` then, and on every other way)."""
+        if self.idle and not self.resolver.per_minute:
+            return self._take(block, True)
+        return still_moving(block, self._take(block, True))
 
     def _take(self, block: Block, moved: bool) -> list[Block] | None:
         """``take``; ``moved``: the block is only a move (``only_move``), known to the caller."""

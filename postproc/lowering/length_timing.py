@@ -68,7 +68,7 @@ from ..ir.keys import watches_none
 from ..compensation.tool_table import ToolTable
 from ..setup.machine_setup import MachineSetup
 from ..setup.work_offsets import declared_offsets, offset_beyond_frame
-from .lower import BlockStep, LoweringStep
+from .lower import BlockStep, LoweringStep, still_moving
 
 AXIS: Final = "Z"
 MM_PER_INCH: Final = 25.4
@@ -241,8 +241,11 @@ class _Complete(BlockStep):
 
     def take_move(self, block: Block) -> list[Block] | None:
         """``take`` for a block the loop found only a move (``only_move``): it holds none of ``_STATE``, and is
-        not asked again (~270 instructions a block compiled)."""
-        return self._take(block, True)
+        not asked again (~270 instructions a block compiled). While no change waits the move only moves the
+        point here; else a waiting change may be put on it (``still_moving``)."""
+        if self.pending is None:
+            return self._take(block, True)
+        return still_moving(block, self._take(block, True))
 
     def _take(self, block: Block, quiet: bool) -> list[Block] | None:
         """``take``; ``quiet``: the block holds none of ``_STATE`` (``watches_none``)."""

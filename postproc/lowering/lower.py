@@ -55,12 +55,22 @@ class BlockStep:
         raise NotImplementedError
 
     def take_move(self, block: Block) -> list[Block] | None:
-        """``take`` for a block that is only a move (``only_move``, asked once by the loop: a step that
-        follows every move overrides this to skip asking its own block again); the same result as ``take``."""
-        return self.take(block)
+        """``take`` for a block that is only a move (``only_move``, asked by the loop: a step that follows
+        every move overrides this to skip asking its own block again); the same result as ``take``, except
+        that None means the block is still only a move: one ``take`` changed in place into more (a length
+        change put on it) comes back as ``[block]``, so the steps after it see what it is (``still_moving``)."""
+        return still_moving(block, self.take(block))
 
     def finish(self) -> list[Block]:
         return []
+
+
+def still_moving(block: Block, out: list[Block] | None) -> list[Block] | None:
+    """``out``, what a step's ``take`` gave for ``block``, a block that was only a move, as ``take_move`` gives it:
+    ``[block]`` where ``take`` changed the block in place so that it is no longer only a move."""
+    if out is None and not only_move(block.sections):
+        return [block]
+    return out
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -115,9 +125,9 @@ class Walk:
     def through(self, block: Block, start: int) -> Block | None:
         """``block`` through the steps from ``start`` on: the block that comes out of the last, or None where a
         step gave several blocks or none (``made``, to go on from step ``at``: ``given``). A block that is only
-        a move (``only_move``) skips a step whose ``moves`` is False and goes to the others' ``take_move``; it is
-        asked again after each step that took it, since a step may change it in place (``length_timing`` puts a
-        waiting length change on the next move): a later step must not skip it, nor take it as only a move."""
+        a move (``only_move``, asked once, and again for a block a step gave) skips a step whose ``moves`` is
+        False and goes to the others' ``take_move``, which gives it back as ``[block]`` where it changed it in
+        place into more (``still_moving``: a later step must not skip it, nor take it as only a move)."""
         steps = self.steps
         n = len(steps)
         plain = only_move(block.sections)
@@ -132,8 +142,6 @@ class Walk:
             else:
                 out = step.take(block)
             if out is None:
-                if plain:  # asked again: a step may have changed the block in place (a length change put on it)
-                    plain = only_move(block.sections)
                 continue
             if len(out) == 1:
                 block = out[0]
