@@ -125,13 +125,71 @@ class _MoveLog(_Log):
 
 def test_a_block_only_a_move_goes_to_take_move_once_it_is_one() -> None:
     """The loop asks ``only_move`` once and hands such a block to ``take_move``, any other to ``take``; the blocks
-    a step makes are asked again on their way through the later steps (``_onward``)."""
+    a step makes are asked again on their way through the later steps (``Walk.onward``)."""
     seen: list[str] = []
     a = _Log("a", seen, twice="p")
     b = _MoveLog("b", seen)
     out = _texts(run_blocks(iter([_block("p", True), _block("q", False)]), [a, b]))
     assert out == ["p", "p'", "q"]
     assert seen == ["a:p", "b-move:p", "b:p", "b-move:p'", "b:p'", "a:q", "b:q", "a:end", "b:end"]
+
+
+class _Tags(_Log):
+    """A ``_Log`` that puts a comment section on the block named ``tag``, in place (returning None), as
+    ``length_timing`` puts a waiting length change on the next move."""
+
+    def __init__(self, name: str, seen: list[str], tag: str) -> None:
+        super().__init__(name, seen)
+        self.tag = tag
+
+    def take(self, block: Block) -> list[Block] | None:
+        self.seen.append(f"{self.name}:{block.text}")
+        if block.text == self.tag:
+            block.sections["Comments"] = Comments(["tagged"])
+        return None
+
+
+def test_a_move_changed_in_place_is_no_longer_taken_as_only_a_move() -> None:
+    """A step that skips plain moves (``moves`` False) still sees a move an earlier step changed in place into
+    something more, and a later step gets it through ``take``, not ``take_move``: by hand, ``p`` tagged by ``a``
+    goes to ``b`` and ``c`` as a block with a comment; ``q`` stays a plain move (``b`` skips it)."""
+    seen: list[str] = []
+    a = _Tags("a", seen, tag="p")
+    b = _Log("b", seen, moves=False)
+    c = _MoveLog("c", seen)
+    out = _texts(run_blocks(iter([_block("p", True), _block("q", True)]), [a, b, c]))
+    assert out == ["p", "q"]
+    assert seen == ["a:p", "b:p", "c:p", "a:q", "c-move:q", "c:q", "a:end", "b:end", "c:end"]
+
+
+class _Toggles(_Log):
+    """A ``_Log`` that stops following plain moves at the block named ``off`` and follows them again from the
+    one named ``on`` (``moves`` set in its own ``take``, as the steps do)."""
+
+    def __init__(self, name: str, seen: list[str], off: str, on: str) -> None:
+        super().__init__(name, seen)
+        self.off, self.on = off, on
+
+    def take(self, block: Block) -> list[Block] | None:
+        if block.text == self.off:
+            self.moves = False
+        elif block.text == self.on:
+            self.moves = True
+        return super().take(block)
+
+
+def test_a_step_that_stops_and_starts_following_moves_is_skipped_only_between() -> None:
+    """By hand: ``a`` sees p1, x (then stops), not p2, y (then starts again), p3; ``b`` and ``c`` follow every
+    block; a step between them that never follows moves (``n``) sees x and y only."""
+    seen: list[str] = []
+    a = _Toggles("a", seen, off="x", on="y")
+    n = _Log("n", seen, moves=False)
+    c = _Log("c", seen)
+    names = [("p1", True), ("x", False), ("p2", True), ("y", False), ("p3", True)]
+    out = _texts(run_blocks(iter([_block(name, plain) for name, plain in names]), [a, n, c]))
+    assert out == ["p1", "x", "p2", "y", "p3"]
+    assert seen == ["a:p1", "c:p1", "a:x", "n:x", "c:x", "c:p2", "a:y", "n:y", "c:y", "a:p3", "c:p3",
+                    "a:end", "n:end", "c:end"]
 
 
 def test_steps_run_as_one_step_as_they_run_in_the_loop() -> None:

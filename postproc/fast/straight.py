@@ -180,7 +180,9 @@ class StraightLane(Lane):
             if not isinstance(sequence, Sequence):
                 return None
             letter, number = words[0]
-            if letter != "N" or values.get("N") != sequence.number or number[0] == "0" and len(number) > 1:
+            read_number = values.get("N")  # (an int: compiled, compared unboxed)
+            if letter != "N" or type(read_number) is not int or read_number != sequence.number \
+                    or number[0] == "0" and len(number) > 1:
                 return None  # (N010 is written N10)
             at = 1
             head = len(number) + 1
@@ -200,9 +202,9 @@ class StraightLane(Lane):
             if letter != axis or letter not in driven or type(value) is not float or not (
                     -SHORT_RANGE < value < SHORT_RANGE if every else as_written(number, value, most)):
                 return None
-            read = values.get(letter)  # the number the word reads as: no step changed it (the reading lane
-            if read is not value and read != value:  # shares one object: no comparison of numbers then)
-                return None
+            read = values.get(letter)  # the number the word reads as: no step changed it. (Both floats: compiled,
+            if type(read) is not float or read != value:  # compared unboxed, where ``is`` boxed ``value`` anew and
+                return None  # the objects were compared: ~190 instructions a word.)
         if arc:
             if center is not None:
                 for axis, value in center.items():
@@ -224,7 +226,7 @@ class StraightLane(Lane):
                     -SHORT_RANGE < rate < SHORT_RANGE if every else as_written(number, rate, most)):
                 return None
             read = values.get(letter)
-            if read is not rate and read != rate:
+            if type(read) is not float or read != rate:
                 return None
             writer.modal.feed = rate
         if writer.after_blocks:

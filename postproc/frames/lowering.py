@@ -48,7 +48,7 @@ from ..interp.control import ASSIGN, CONTROL
 from ..ir.expr import Binary, Expr, Num
 from ..ir import Block, CompoundMotion, CutterCompensation, Motion, Section
 from ..ir.keys import watches_none
-from ..lowering.lower import BlockStep, LoweringStep, run_blocks
+from ..lowering.lower import BlockStep, LoweringStep, run_blocks, still_moving
 from ..ir.state import MM_PER_INCH, ModalState, changes_nothing
 from .affine import EXACT, INDEX, XYZ
 from .frame import PLANE_AXES, Frame, Position
@@ -157,7 +157,7 @@ class FrameEvaluator(BlockStep):
                 if self.reached.symbolic:
                     self.targets(block.sections)
                 return None
-        return self.take(block)
+        return still_moving(block, self.take(block))
 
     # -- one block ---------------------------------------------------------------------------------
     def block(self, block: Block) -> None:

@@ -34,7 +34,7 @@ from ..ir.expr import Expr
 from .run_state import RUN_KEY, FrameRun
 from ..ir import Block, DataSetting, Motion, Section
 from ..ir.keys import watches_none
-from ..lowering.lower import BlockStep, LoweringStep
+from ..lowering.lower import BlockStep, LoweringStep, still_moving
 from ..ir.state import MM_PER_INCH
 
 MEASURED: Final = "tool_entry_at_point"
@@ -67,9 +67,19 @@ class _Entries(BlockStep):
         self.run = _Run(ctx)
 
     def take(self, block: Block) -> list[Block] | None:
+        return self._take(block, watches_none(block.sections, _WATCHED))
+
+    def take_move(self, block: Block) -> list[Block] | None:
+        """``take`` for a block the loop found only a move (``only_move``): it holds none of ``_WATCHED``, and is
+        not asked again (~270 instructions a block compiled); a block given back as it came stays only a move
+        (``still_moving`` for the rest)."""
+        return still_moving(block, self._take(block, True)) if self.run.homed else self._take(block, True)
+
+    def _take(self, block: Block, quiet: bool) -> list[Block] | None:
+        """``take``; ``quiet``: the block holds none of ``_WATCHED`` (``watches_none``)."""
         s = block.sections
         run = self.run
-        if not run.homed and watches_none(s, _WATCHED):
+        if not run.homed and quiet:
             m = s.get("Motion")
             if m is None or isinstance(m, Motion) and m.mode not in _HOME:
                 return None  # the common block: the frame evaluation follows its point

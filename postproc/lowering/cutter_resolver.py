@@ -27,7 +27,7 @@ from .cutter_moves import CompensatedMoves
 from .cutter_point import MM_PER_INCH, MOVES, Unresolvable, UnknownHere
 from .point_after import FOLLOWED
 from .rule_trial import STAND_IN_RADIUS, STRETCH_LIMIT, RuleTrial
-from .lower import BlockStep, run_blocks
+from .lower import BlockStep, run_blocks, still_moving
 
 Keeps = Callable[["Resolver", CutterCompensation], bool]
 """Whether the target writes a G41/G42 itself (given the resolver, for the tool data it tracks)."""
@@ -341,12 +341,24 @@ class Resolution(BlockStep):
         """The program's last block: where an error found at its end (``finish``) is located."""
 
     def take(self, block: Block) -> list[Block] | None:
+        return self._take(block, False)
+
+    def take_move(self, block: Block) -> list[Block] | None:
+        """``take`` for a block the loop found only a move (``only_move``, not asked again: ~270 instructions a
+        block compiled). An idle resolver only notes or tracks the move, unless it writes the feed back in
+        inverse time (``still_moving`` then, and on every other way)."""
+        if self.idle and not self.resolver.per_minute:
+            return self._take(block, True)
+        return still_moving(block, self._take(block, True))
+
+    def _take(self, block: Block, moved: bool) -> list[Block] | None:
+        """``take``; ``moved``: the block is only a move (``only_move``), known to the caller."""
         r = self.resolver
         self.last = block
         sections = block.sections
         plain = self.idle
         odd = False
-        if plain and not only_move(sections):  # one look at the keys: none asks for the general way
+        if plain and not moved and not only_move(sections):  # one look at the keys: none asks for the general way
             for key in sections:
                 if key in _NOT_NOTED:
                     odd = True

@@ -70,7 +70,7 @@ from ..setup.machine_setup import MachineSetup
 from ..setup.work_offsets import declared_offsets, offset_beyond_frame
 from ..cycles.section import CannedCycle
 from ..interp.control import LABEL
-from .lower import BlockStep, LoweringStep
+from .lower import BlockStep, LoweringStep, still_moving
 from .point_after import FOLLOWED, compound_end, cycle_end, loses_after
 
 AXIS: Final = "Z"
@@ -241,11 +241,23 @@ class _Complete(BlockStep):
         self.frame = _Frame(ctx.setup)  # what puts a machine-coordinate Z in the program's frame
 
     def take(self, block: Block) -> list[Block] | None:
+        return self._take(block, watches_none(block.sections, _STATE))
+
+    def take_move(self, block: Block) -> list[Block] | None:
+        """``take`` for a block the loop found only a move (``only_move``): it holds none of ``_STATE``, and is
+        not asked again (~270 instructions a block compiled). While no change waits the move only moves the
+        point here; else a waiting change may be put on it (``still_moving``)."""
+        if self.pending is None:
+            return self._take(block, True)
+        return still_moving(block, self._take(block, True))
+
+    def _take(self, block: Block, quiet: bool) -> list[Block] | None:
+        """``take``; ``quiet``: the block holds none of ``_STATE`` (``watches_none``)."""
         sections = block.sections
         pending = self.pending
         axes = self.axes
         pos = self.pos
-        if pending is None and watches_none(sections, _STATE):  # the common block: at most a plain move
+        if pending is None and quiet:  # the common block: at most a plain move
             motion = sections.get("Motion")
             if isinstance(motion, Motion):  # (typed: its fields are read natively, not by name)
                 plain = motion.mode in _PLAIN

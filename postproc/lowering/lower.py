@@ -43,9 +43,11 @@ class BlockStep:
 
     ``take`` gets every block the step before it gives, in order (a block that is only a move through
     ``take_move``), except blocks that are only a move (``only_move``) while ``moves`` is False: the step
-    says so when such a block can neither change its state nor be changed by it (it may set ``moves`` again at any block). ``take`` returns None for the
-    block as it is (perhaps changed in place), or the blocks that replace it (none: dropped or held;
-    several: an expansion, or held blocks given back). ``finish`` gives what is still held at the end."""
+    says so when such a block can neither change its state nor be changed by it (it may set ``moves`` again at
+    any block, in its own ``take``, ``take_move`` or ``finish``: the loop looks at it after each). ``take``
+    returns None for the block as it is (perhaps changed in place), or the blocks that replace it (none:
+    dropped or held; several: an expansion, or held blocks given back). ``finish`` gives what is still held
+    at the end."""
 
     def __init__(self) -> None:
         self.moves = True
@@ -55,12 +57,22 @@ class BlockStep:
         raise NotImplementedError
 
     def take_move(self, block: Block) -> list[Block] | None:
-        """``take`` for a block that is only a move (``only_move``, asked once by the loop: a step that
-        follows every move overrides this to skip asking its own block again); the same result as ``take``."""
-        return self.take(block)
+        """``take`` for a block that is only a move (``only_move``, asked by the loop: a step that follows
+        every move overrides this to skip asking its own block again); the same result as ``take``, except
+        that None means the block is still only a move: one ``take`` changed in place into more (a length
+        change put on it) comes back as ``[block]``, so the steps after it see what it is (``still_moving``)."""
+        return still_moving(block, self.take(block))
 
     def finish(self) -> list[Block]:
         return []
+
+
+def still_moving(block: Block, out: list[Block] | None) -> list[Block] | None:
+    """``out``, what a step's ``take`` gave for ``block``, a block that was only a move, as ``take_move`` gives it:
+    ``[block]`` where ``take`` changed the block in place so that it is no longer only a move."""
+    if out is None and not only_move(block.sections):
+        return [block]
+    return out
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -85,20 +97,108 @@ class Steps(BlockStep):
     def __init__(self, steps: list[BlockStep]) -> None:
         super().__init__()
         self.steps = steps
+        self.walk = Walk(steps)
         self.moves = any(step.moves for step in steps)
 
     def take(self, block: Block) -> list[Block] | None:
-        made = list(_onward(block, self.steps, 0))
+        walk = self.walk
+        one = walk.through(block, 0)
+        made = [one] if one is not None else list(walk.given())
         self.moves = any(step.moves for step in self.steps)
         return None if len(made) == 1 and made[0] is block else made
 
     def finish(self) -> list[Block]:
+        return list(self.walk.finish())
+
+
+class Walk:
+    """The one walk of blocks through a group of ``BlockStep``s, in order, as the chain of their generators
+    would pass them: a block a step expands goes on, block by block, to the next step before the step's next
+    block; at the end each step's held blocks (``finish``) go through the steps after it, the first step's
+    first. ``through`` walks one block as far as it goes alone (every block of most programs: no generator
+    and no list); ``given`` and ``onward`` go on from where a step gave several blocks or none."""
+
+    def __init__(self, steps: list[BlockStep]) -> None:
+        self.steps = steps
+        self.made: list[Block] = []
+        """What the step before ``at`` gave, where ``through`` stopped (None returned)."""
+        self.at = 0
+        self.next_move: list[int] = []
+        """``next_move[i]``: the first step from ``i`` on whose ``moves`` is True (``len(steps)``: none). A block
+        that is only a move goes from one such step to the next: most steps of a translation pass such blocks,
+        and looking at each of them cost ~50 instructions a step a block compiled (17 of 21 to LinuxCNC)."""
+        self.marked()
+
+    def marked(self) -> None:
+        """``next_move`` anew: a step's ``moves`` changed (which a step does in its own calls only)."""
         steps = self.steps
-        made: list[Block] = []
+        n = len(steps)
+        found = [n] * (n + 1)
+        for k in range(n - 1, -1, -1):
+            found[k] = k if steps[k].moves else found[k + 1]
+        self.next_move = found
+
+    def through(self, block: Block, start: int) -> Block | None:
+        """``block`` through the steps from ``start`` on: the block that comes out of the last, or None where a
+        step gave several blocks or none (``made``, to go on from step ``at``: ``given``). A block that is only
+        a move (``only_move``, asked once, and again for a block a step gave) skips a step whose ``moves`` is
+        False and goes to the others' ``take_move``, which gives it back as ``[block]`` where it changed it in
+        place into more (``still_moving``: a later step must not skip it, nor take it as only a move)."""
+        steps = self.steps
+        n = len(steps)
+        plain = only_move(block.sections)
+        i = start
+        while i < n:
+            if plain:
+                i = self.next_move[i]
+                if i == n:
+                    break
+                step = steps[i]
+                i += 1
+                out = step.take_move(block)
+                if not step.moves:
+                    self.marked()
+            else:
+                step = steps[i]
+                i += 1
+                moves = step.moves
+                out = step.take(block)
+                if step.moves != moves:
+                    self.marked()
+            if out is None:
+                continue
+            if len(out) == 1:
+                block = out[0]
+                plain = only_move(block.sections)
+                continue
+            self.made = out
+            self.at = i
+            return None
+        return block
+
+    def given(self) -> Iterator[Block]:
+        """The blocks where ``through`` stopped, each through the steps after the one that gave them."""
+        made = self.made
+        at = self.at
+        for block in made:
+            yield from self.onward(block, at)
+
+    def onward(self, block: Block, start: int) -> Iterator[Block]:
+        """What comes out of the last step for ``block`` walked from step ``start`` on."""
+        one = self.through(block, start)
+        if one is not None:
+            yield one
+        else:
+            yield from self.given()
+
+    def finish(self) -> Iterator[Block]:
+        """At the end: each step's held blocks through the steps after it, the first step's first."""
+        steps = self.steps
         for k in range(len(steps)):
-            for held in steps[k].finish():
-                made.extend(_onward(held, steps, k + 1))
-        return made
+            held_blocks = steps[k].finish()
+            self.marked()
+            for held in held_blocks:
+                yield from self.onward(held, k + 1)
 
 
 def register_transform(transform: Lowering) -> Lowering:
@@ -112,7 +212,10 @@ def lower_for(blocks: Iterator[Block], ctx: Context, target: type[Dialect], on_u
               steps: Sequence[Lowering] | None = None, then: Sequence[Lowering] = ()) -> Iterator[Block]:
     """Apply the generic steps (``steps``, by default the default registry's), then the target's own, then
     ``then`` (a run's own last steps: ``translate``'s arc pass); consecutive ``LoweringStep``s run as one
-    loop (``run_blocks``)."""
+    loop (``run_blocks``). A function step that gives back the stream it was given has nothing to do in this
+    program (``convert_inverse_time`` where nothing is in inverse time...): it does not split the loop, whose
+    every level would cost each block a generator's resumption and another ``only_move`` (~700 instructions
+    compiled, four such levels in a translation to LinuxCNC)."""
     ctx.on_unsupported = on_unsupported
     stream = blocks
     group: list[BlockStep] = []
@@ -122,74 +225,27 @@ def lower_for(blocks: Iterator[Block], ctx: Context, target: type[Dialect], on_u
             if run is not None:
                 group.append(run)
             continue
-        if group:
-            stream = run_blocks(stream, group)
-            group = []
-        stream = transform(stream, ctx, target)
+        if not group:
+            stream = transform(stream, ctx, target)
+            continue
+        grouped = run_blocks(stream, group)  # (a generator: nothing runs until the first block is asked)
+        made = transform(grouped, ctx, target)
+        if made is grouped:
+            continue  # nothing to do in this program (asked once, here): the loop goes on past it
+        stream = made
+        group = []
     if group:
         stream = run_blocks(stream, group)
     return stream
 
 
 def run_blocks(blocks: Iterator[Block], steps: list[BlockStep]) -> Iterator[Block]:
-    """Every block through ``steps`` in order, as the chain of their generators would pass it: a block a
-    step expands goes on, block by block, to the next step before the step's next block; at the end each
-    step's held blocks (``finish``) go through the steps after it, the first step's first. (``_onward`` repeats
-    this loop for a made block: one loop over a stack of made blocks, fed by ``next(blocks, None)``, measured
-    ~1.9k instructions a block more compiled, ``fanuc linuxcnc 0``: mypyc calls ``next`` as a builtin looked up
-    by name, where a ``for`` loop steps the iterator natively.)"""
-    n = len(steps)
+    """Every block through ``steps`` in order (``Walk``), then what they still hold."""
+    walk = Walk(steps)
     for block in blocks:
-        plain = only_move(block.sections)
-        i = 0
-        through = True
-        while i < n:
-            step = steps[i]
-            i += 1
-            if plain:
-                if not step.moves:
-                    continue
-                out = step.take_move(block)
-            else:
-                out = step.take(block)
-            if out is None:
-                continue
-            if len(out) == 1:
-                block = out[0]
-                plain = only_move(block.sections)
-                continue
-            through = False
-            for made in out:
-                yield from _onward(made, steps, i)
-            break
-        if through:
-            yield block
-    for k in range(n):
-        for made in steps[k].finish():
-            yield from _onward(made, steps, k + 1)
-
-
-def _onward(block: Block, steps: list[BlockStep], start: int) -> Iterator[Block]:
-    """``block``, made by step ``start - 1``, through the steps from ``start`` on (``run_blocks``'s loop)."""
-    n = len(steps)
-    plain = only_move(block.sections)
-    i = start
-    while i < n:
-        step = steps[i]
-        i += 1
-        if plain:
-            if not step.moves:
-                continue
-            out = step.take_move(block)
+        one = walk.through(block, 0)
+        if one is not None:
+            yield one
         else:
-            out = step.take(block)
-        if out is None:
-            continue
-        if len(out) == 1:
-            block = out[0]
-            plain = only_move(block.sections)
-            continue
-        for made in out:
-            yield from _onward(made, steps, i)
-        return
-    yield block
+            yield from walk.given()
+    yield from walk.finish()

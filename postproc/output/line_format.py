@@ -96,18 +96,20 @@ class LineFormat:
         return cls(ctx, target, lower_case, rule)
 
     def wrap(self, emit: Callable[[str], object]) -> Callable[[str], object]:
-        rule = self.rule
-        if rule is not None and not self.formats:  # only the target's rule: most text passes its quick test
-            fits = rule.fits
-            format_ = self.format
-
-            def ruled(text: str) -> object:
-                return emit(text if fits(text) else format_(text))
-            return ruled
+        """``emit`` of each text as ``line`` has it."""
+        line = self.line
 
         def formatted(text: str) -> object:
-            return emit(self.format(text))
+            return emit(line(text))
         return formatted
+
+    def line(self, text: str) -> str:
+        """``text`` (a block's, or a template's lines) formatted, and as the target's rule has it. With only the
+        rule to apply, most text passes its quick test as it is."""
+        rule = self.rule
+        if rule is not None and not self.formats and rule.fits(text):
+            return text
+        return self.format(text)
 
     def format(self, text: str) -> str:
         rule = self.rule
