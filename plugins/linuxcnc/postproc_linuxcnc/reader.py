@@ -41,7 +41,8 @@ class LinuxcncReader(NgcReader):
             elif sections or block.words:
                 if opened is None:
                     opened = False
-                if not ended:
+                text = block.text  # (an M word's letter is in its line: most lines are not looked through)
+                if not ended and text is not None and ("M" in text or "m" in text):
                     for a, n in block.words:  # a plain loop: a generator per block cost ~3k instructions
                         if (a == "M" or a == "m") and n.lstrip("0") in ("2", "30"):
                             ended = True
