@@ -30,6 +30,9 @@ from .plain import (LETTER_ARC, LETTER_AXIS, LETTER_F, LETTER_G, LETTER_KIND, LE
 
 _UPPER: Final = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
 _FEED_MODES: Final = frozenset(("linear", "cw", "ccw"))
+_MOTIONS_HELD: Final = 64
+"""Spellings of motion codes a run remembers (``NgcPlainLane.motions``): a program writes a few (``G1``, ``G01``);
+a hostile one writing thousands costs a look-up each past these, never memory."""
 _MOTION_GROUP: Final = "01"
 """The motion codes that need a feed rate in force (``NgcWordBlockSyntax._check_feed_mode_code``)."""
 
@@ -39,7 +42,7 @@ class NgcPlainLane(BlockLane):
     """N (first), maybe one motion code (G0-G3), axis words, an arc's centre I/J/K or radius R, maybe F; outside
     an active canned cycle and while a motion mode is in force."""
 
-    __slots__ = ("syntax", "real", "n_first", "codes", "own_codes", "own_state", "own_motion", "special")
+    __slots__ = ("syntax", "real", "n_first", "codes", "own_codes", "own_state", "own_motion", "special", "motions")
 
     def __init__(self, syntax: NgcWordBlockSyntax) -> None:
         self.syntax = syntax
@@ -51,6 +54,8 @@ class NgcPlainLane(BlockLane):
         self.own_state = syntax.OWN_STATE
         self.own_motion = syntax.OWN_MOTION
         self.special = syntax.SPECIAL_G
+        self.motions: dict[str, tuple[str, str]] = {}
+        """The motion codes met, by their number as written (``_motion_code``; at most ``_MOTIONS_HELD``)."""
 
     def read(self, block: Block, ctx: Context, words: list[tuple[str, str]]) -> bool:
         state = ctx.state
@@ -87,17 +92,14 @@ class NgcPlainLane(BlockLane):
                     break  # a fractional N, or one the N-first rule looks at: the general path
                 sequence = int(num)
             elif kind == LETTER_G and mode is None:
-                key = g_key(num)
-                if key in self.special or key in self.codes.refused_g:
-                    break
-                entry = self.codes.g.get(key)
-                if entry is None or entry[1] != "motion" or entry[2] not in MOTION_MODES:
-                    break
-                group, what, arg = str(entry[0]), entry[1], entry[2]
-                own = self.own_codes
-                if group in own or what in own or isinstance(arg, str) and arg in own:
-                    break
-                mode = str(arg)
+                found = self.motions.get(num)
+                if found is None:
+                    found = self._motion_code(num)
+                    if found is None:
+                        break
+                    if len(self.motions) < _MOTIONS_HELD:
+                        self.motions[num] = found
+                group, mode = found
             elif up not in real:
                 break
             elif kind == LETTER_AXIS:
@@ -139,6 +141,24 @@ class NgcPlainLane(BlockLane):
                 block.sections["Feed"] = Feed(others["F"])
             return True
         return False
+
+
+    def _motion_code(self, num: str) -> tuple[str, str] | None:
+        """A G word's number as written -> (its modal group, its motion mode) where it is a motion code the lane
+        reads (G0-G3 of the dialect's table that the dialect neither reads itself nor refuses); else None.
+        Remembered per spelling (``motions``): it depends on the number and the run's fixed declarations only,
+        and ``g_key`` is interpreted (~3.4k instructions a call compiled: LinuxCNC writes G1 in every line)."""
+        key = g_key(num)
+        if key in self.special or key in self.codes.refused_g:
+            return None
+        entry = self.codes.g.get(key)
+        if entry is None or entry[1] != "motion" or entry[2] not in MOTION_MODES:
+            return None
+        group, what, arg = str(entry[0]), entry[1], entry[2]
+        own = self.own_codes
+        if group in own or what in own or isinstance(arg, str) and arg in own:
+            return None
+        return group, str(arg)
 
 
 def _starts_with_n(text: str) -> bool:

@@ -16,12 +16,12 @@ A computed word keeps its text as written in ``block.words`` (``("X", "[#1*2.]")
 from __future__ import annotations
 
 import re
-from typing import Iterable, Iterator
 
 from postproc.errors import Location, ParseError, character_name
 from postproc.ir import BlockDelete, Block, Comments, ProgramStart, Sequence, TapeMark
 
 from .expressions import FANUC_SPELLING, ExprSyntaxError, parse_word_value
+from .line_ends import split_line as split_line, split_lines as split_lines  # (the readers' line splitting, compiled)
 from .macro_b import parse_statement_fanuc
 
 NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)"
@@ -35,22 +35,6 @@ _COMMENT = re.compile(r"\(([^()]*)\)")
 _BLANKS = re.compile(r"[ \t]*+")
 _TOKEN = re.compile(r"\S+")
 """What ``str.split()`` would take as the token at a position (matched where it stands, not split off)."""
-
-
-def split_lines(lines: Iterable[str]) -> Iterator[tuple[int, str, str]]:
-    """Yield (line number, text, end of line) for each physical line, keeping the exact terminator."""
-    number = 0
-    for raw in lines:
-        number += 1
-        if raw.endswith("\n"):
-            if raw.endswith("\r\n"):
-                yield number, raw[:-2], "\r\n"
-            else:
-                yield number, raw[:-1], "\n"
-        elif raw.endswith("\r"):
-            yield number, raw[:-1], "\r"
-        else:
-            yield number, raw, ""
 
 
 def lex_block(file: str, number: int, text: str, eol: str, macro: bool = True, leader: bool = False) -> Block:

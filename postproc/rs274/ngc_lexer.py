@@ -36,7 +36,8 @@ from postproc.ir.expr import Expr, Var
 from postproc.ir import Block, BlockDelete, Comments, Sequence, TapeMark
 
 from .expressions import LINUXCNC_SPELLING, ExprSyntaxError, parse_word_value
-from .lexer import NUMBER, split_lines
+from .lexer import NUMBER
+from .line_ends import split_line, split_lines
 from .oword import OwordParser, parse_assignments
 
 __all__ = ["NgcReader", "lex_block", "plain_words", "split_lines", "strip_comments"]
@@ -296,6 +297,14 @@ def _unsupported_value(ch: str, dialect: str) -> str:
     return f"expressions ([...]) are not supported by the {dialect} reader"
 
 
+def _ends(words: list[tuple[str, str]]) -> bool:
+    """The words hold the program's end, M2 or M30 (with leading zeros: ``M02``)."""
+    for a, n in words:
+        if (a == "M" or a == "m") and n.lstrip("0") in ("2", "30"):
+            return True
+    return False
+
+
 @mypyc_attr(allow_interpreted_subclasses=True)
 class NgcReader(Reader):
     """Physical lines -> lexed blocks under the RS274/NGC rules; errors are reported per block and the
@@ -310,6 +319,12 @@ class NgcReader(Reader):
     """The dialect reads o-words, parameters and expressions (LinuxCNC); else they are errors (grbl)."""
     POLAR: ClassVar[bool] = False
     """The dialect reads ``@`` and ``^`` words (LinuxCNC's polar coordinates); else they are errors."""
+    TAPE_MARK_REFUSED: ClassVar[str] = ""
+    """Empty: a ``%`` line is a tape mark wherever it stands (a subclass may read it otherwise). Else a ``%`` is
+    the program's first line or closes a program opened with one, and any other is refused unless the program
+    has already ended (M2/M30), with this quoted in the error as what the controller says (LinuxCNC's rs274:
+    "Bad character '%' used"). Read here, in the family's compiled loop: as a subclass's generator around it,
+    the rule cost every line a resumption in Python (~3k instructions)."""
 
     def parametric(self) -> bool:
         """Whether this reader reads o-words, parameters and expressions: ``PARAMETRIC``, or a choice of the
@@ -329,12 +344,34 @@ class NgcReader(Reader):
         calls = self.read_call if parametric else None
         ignore_slash = None if self.BLOCK_DELETE else self._ignored_slash
         polar = self.POLAR
-        for number, text, eol in split_lines(lines):
+        refused = self.TAPE_MARK_REFUSED
+        opened: bool | None = None  # (``TAPE_MARK_REFUSED``) whether a ``%`` opened the program; None until the
+        ended = False  # first line with content; and whether the program has ended (M2/M30)
+        number = 0
+        for raw in lines:  # (each line split natively: the generator ``split_lines`` cost ~3.5k instructions a line)
+            number += 1
+            text, eol = split_line(raw)
             try:
-                yield lex_block(file, number, text, eol, dialect, oword, calls, ignore_slash, polar)
+                block = lex_block(file, number, text, eol, dialect, oword, calls, ignore_slash, polar)
             except PostprocError as err:
                 report(err, text)
                 yield Block(number, text, eol)
+                continue
+            if refused:
+                sections = block.sections
+                if "TapeMark" in sections:
+                    if opened is False and not ended:
+                        report(ParseError(f"'%' closes only a program that opens with '%' on its first line ({refused})",
+                                          Location(file, number, 1)), text)
+                        yield Block(number, text, eol)  # kept as text, as every refused line
+                        continue
+                    opened = opened is None or opened
+                elif sections or block.words:
+                    if opened is None:
+                        opened = False
+                    if not ended and ("M" in text or "m" in text):  # (an M word's letter is in its line)
+                        ended = _ends(block.words)
+            yield block
 
     def _ignored_slash(self, where: Location) -> None:
         self.ctx.diagnostics.warn(f"'/' is ignored by {self.DIALECT} (no block delete): the block runs", where)

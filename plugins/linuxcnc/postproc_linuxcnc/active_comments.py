@@ -10,12 +10,12 @@ comment, however often a loop runs it). Between LinuxCNC programs they are kept 
 from __future__ import annotations
 
 import re
-from typing import Iterator
 
 from postproc.syntaxes.comments import CommentSyntax
 from postproc.context import Context
 from postproc.dialect import Dialect
 from postproc.ir import Block
+from postproc.lowering.lower import BlockStep, LoweringStep
 
 ACTIVE = re.compile(r"[ \t]*(MSG|DEBUG|PRINT|LOGOPEN|LOGAPPEND|LOGCLOSE|LOG|PROBEOPEN|PROBECLOSE|ABORT|PY)\b"
                     r"[ \t]*(,?)", re.IGNORECASE)
@@ -42,30 +42,47 @@ LOST = {
 """What the operator loses when the comment becomes inert."""
 
 
-def warn_active_comments(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    """A generic lowering step (it must see every translation from LinuxCNC, whatever the target)."""
-    if ctx.dialect != "linuxcnc" or target.NAME == "linuxcnc":
-        return blocks
-    return _warn(blocks, ctx, target.NAME)
+class WarnActiveComments(LoweringStep):
+    """A generic lowering step (it must see every translation from LinuxCNC, whatever the target), taking the blocks
+    one at a time in the run's loop (``postproc.lowering.lower.run_blocks``): as a generator of its own it cost every
+    LinuxCNC block read for another target (``verify``'s of each translation to LinuxCNC) a resumption in Python."""
+
+    def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
+        if ctx.dialect != "linuxcnc" or target.NAME == "linuxcnc":
+            return None
+        return _Warn(ctx, target.NAME)
 
 
-def _warn(blocks: Iterator[Block], ctx: Context, target: str) -> Iterator[Block]:
-    warned: set[tuple[int, int]] = set()
-    for block in blocks:
+warn_active_comments = WarnActiveComments()
+
+
+class _Warn(BlockStep):
+    """Warns of each active comment once per source comment (a loop runs one several times)."""
+
+    def __init__(self, ctx: Context, target: str) -> None:
+        super().__init__()
+        self.moves = False  # a block that is only a move has no comment
+        self.ctx = ctx
+        self.target = target
+        self.warned: set[tuple[int, int]] = set()
+
+    def take(self, block: Block) -> list[Block] | None:
         comments = block.sections.get("Comments")
-        if comments is not None:
-            for text in comments.texts:  # type: ignore[attr-defined]
-                m = ACTIVE.match(text)
-                if m is None:
-                    continue
-                col = block.text.find("(" + text + ")") + 1 if block.text is not None else 1
-                if col < 1 or (block.line, col) in warned:
-                    continue  # a ';' comment: not active (a block the program computed has no text: column 1)
-                warned.add((block.line, col))
-                key = m.group(1).upper()
-                lost = LOST[key]
-                if key in ("DEBUG", "PRINT") and "#" in text:
-                    lost = "the parameter values it prints are lost"
-                ctx.diagnostics.warn(f"LinuxCNC active comment ({key},...) is an inert comment in {target}: {lost}",
-                                     ctx.at(block, col))
-        yield block
+        if comments is None:
+            return None
+        ctx, warned = self.ctx, self.warned
+        for text in comments.texts:  # type: ignore[attr-defined]
+            m = ACTIVE.match(text)
+            if m is None:
+                continue
+            col = block.text.find("(" + text + ")") + 1 if block.text is not None else 1
+            if col < 1 or (block.line, col) in warned:
+                continue  # a ';' comment: not active (a block the program computed has no text: column 1)
+            warned.add((block.line, col))
+            key = m.group(1).upper()
+            lost = LOST[key]
+            if key in ("DEBUG", "PRINT") and "#" in text:
+                lost = "the parameter values it prints are lost"
+            ctx.diagnostics.warn(f"LinuxCNC active comment ({key},...) is an inert comment in {self.target}: {lost}",
+                                 ctx.at(block, col))
+        return None
