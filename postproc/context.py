@@ -166,11 +166,13 @@ DROPPED_MOVES: Final = "dropped_moves"
 """``Context.run_data`` key: the blocks whose moves a lowering step dropped with ``--on-unsupported warn``
 (written as comments), which the writer then treats as displacing what follows (``postproc.output.displacement``)."""
 
-_WORD_AT: Final = re.compile(r"([A-Za-z:])[ \t]*([-+]?(?:\d+\.?\d*|\.\d+))")
-_COMMENT_AT: Final = re.compile(r"\([^()]*\)|\([^()]*$|;.*$")
+# A pattern text, not a compiled pattern: compiled where first used (``re``'s cache), so a start that
+# reports no error compiles none (each ``re.compile`` at import costs every start ~0.3-1M instructions).
+_WORD_AT: Final = r"([A-Za-z:])[ \t]*([-+]?(?:\d+\.?\d*|\.\d+))"
+_COMMENT_AT: Final = r"\([^()]*\)|\([^()]*$|;.*$"
 
 
 def word_columns(text: str) -> list[tuple[int, str, str]]:
     """(1-based column, letter, number text) of every word outside comments."""
-    masked = _COMMENT_AT.sub(lambda m: " " * len(m.group(0)), text)
-    return [(m.start() + 1, m.group(1), m.group(2)) for m in _WORD_AT.finditer(masked)]
+    masked = re.sub(_COMMENT_AT, lambda m: " " * len(m.group(0)), text)
+    return [(m.start() + 1, m.group(1), m.group(2)) for m in re.finditer(_WORD_AT, masked)]

@@ -174,10 +174,12 @@ class Diagnostics:
                 f"whose {letter} never took effect" for letter, count in sorted(self.consequences.items())]
 
 
-_ADDRESS = re.compile(r"([A-Za-z])\s*[-+.\d#\[]")
-_COMMENT = re.compile(r"\([^)]*\)?|;.*")
+# A pattern text, not a compiled pattern: compiled where first used (``re``'s cache), so a start that
+# reports no error compiles none (each ``re.compile`` at import costs every start ~0.3-1M instructions).
+_ADDRESS = r"([A-Za-z])\s*[-+.\d#\[]"
+_COMMENT = r"\([^)]*\)?|;.*"
 
 
 def addresses(text: str) -> set[str]:
     """The upper-case addresses of the words on a line (comments left out)."""
-    return {m.group(1).upper() for m in _ADDRESS.finditer(_COMMENT.sub(" ", text))}
+    return {m.group(1).upper() for m in re.finditer(_ADDRESS, re.sub(_COMMENT, " ", text))}

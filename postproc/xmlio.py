@@ -74,7 +74,7 @@ def parse_xml_bytes(data: bytes, file: str, max_elements: int | None = None,
         tree = etree.ElementTree(etree.fromstring(data, parser(), base_url=file))
     except etree.XMLSyntaxError as exc:
         line, col = exc.position if exc.position else (1, 1)
-        msg = _LIBXML_POSITION.sub("", exc.msg or "")  # the location already says where
+        msg = re.sub(_LIBXML_POSITION, "", exc.msg or "")  # the location already says where
         raise ConfigError(f"malformed XML: {msg}", Location(file, line or 1, max(col or 1, 1))) from None
     if tree.docinfo.doctype:
         where_ = _offset_location(data, data.find(b"<!DOCTYPE"), file)
@@ -104,7 +104,8 @@ def _check_bounds(root: etree._Element, file: str, max_elements: int) -> None:
             raise ConfigError(f"a value or text longer than {MAX_VALUE_CHARS} characters", where(el, file))
 
 
-_LIBXML_POSITION = re.compile(r", line \d+, column \d+$")
+_LIBXML_POSITION = r", line \d+, column \d+$"
+"""Compiled where first used (an XML error), not at every start."""
 """libxml2 repeats the position at the end of its messages; its columns are already 1-based."""
 
 

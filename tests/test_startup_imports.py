@@ -265,3 +265,44 @@ def test_listing_the_dialects_runs_only_the_dialect_hook(tmp_path: Path) -> None
     assert "postproc.core_plugin" in modules and "postproc.commands.dialect_table" in modules  # the probe saw the run
     assert [name for name in ("postproc.cycles.lowering", "postproc.frames.lowering", "postproc.lowering.sequences",
                               "postproc.patterns", "postproc.frames.measured_entries") if loaded(modules, name)] == []
+
+
+PATTERNS_PROBE = """
+import atexit, os, re, runpy, sys
+atexit.register(lambda: open(os.environ["MODULES_OUT"], "w").write(
+    "\\n".join(str(key[1]) for key in list(re._cache) if isinstance(key[1], str))))
+sys.argv = ["postproc", *os.environ["ARGS"].split("\\n")]
+runpy.run_module("postproc", run_name="__main__")
+"""
+"""Runs a command and writes the text of every regular expression compiled by then (``re``'s cache: ``re.compile``
+and ``re.match`` with a text both go through it), one a line."""
+
+
+def patterns_after(tmp_path: Path, *args: str, ok: bool = True) -> set[str]:
+    out = tmp_path / "patterns.txt"
+    env = dict(os.environ, HOME=str(tmp_path), MODULES_OUT=str(out), ARGS="\n".join(args))
+    done = subprocess.run([sys.executable, "-c", PATTERNS_PROBE], cwd=tmp_path, env=env, capture_output=True,
+                          text=True, timeout=120)
+    assert (done.returncode == 0) == ok, done.stderr
+    return set(out.read_text().splitlines())
+
+
+def test_a_plain_translation_compiles_no_pattern_of_an_error_report(tmp_path: Path, one_line: Path) -> None:
+    """The patterns only an error report, ``--arg``, ``--define`` or ``--transform`` reads are compiled where
+    first used (each ``re.compile`` at import cost every start ~0.3-1M instructions); the other side: a
+    ``--define`` with a bad name compiles its pattern, so the probe sees what a run compiles."""
+    from postproc import context, errors, xmlio
+    from postproc.commands import handlers
+    from postproc.cycles import resolve
+    from postproc.lowering import sequences
+    from postproc.transforms import spec
+    # (not ``errors._COMMENT``: the same text as ``postproc.output.line_format._COMMENT``, compiled for the writer)
+    cold = {errors._ADDRESS, context._WORD_AT, context._COMMENT_AT, xmlio._LIBXML_POSITION,
+            resolve._COMMENT, handlers._ARGUMENT, spec._NUMBER, sequences._NAME}
+    assert all(isinstance(text, str) for text in cold)  # texts, not patterns compiled at import
+    for target in ("grbl", "linuxcnc", "isg", "fagor", "fanuc"):
+        compiled = patterns_after(tmp_path, "translate", str(one_line), "--from", "fanuc", "--to", target)
+        assert compiled and sorted(cold & compiled) == [], target
+    refused = patterns_after(tmp_path, "translate", str(one_line), "--from", "fanuc", "--to", "grbl",
+                             "--define", "1x=2", ok=False)
+    assert sequences._NAME in refused

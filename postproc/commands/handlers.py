@@ -121,14 +121,15 @@ def cmd_translate(args: argparse.Namespace) -> int:
 
 
 
-_ARGUMENT = re.compile(r"([A-Za-z])=([-+]?(?:\d+\.?\d*|\.\d+))")
+_ARGUMENT = r"([A-Za-z])=([-+]?(?:\d+\.?\d*|\.\d+))"
+"""Compiled where first used (``--arg``), not at every start."""
 
 
 def _arguments(texts: Sequence[str]) -> dict[str, float]:
     """``--arg A=30`` (repeatable) as {"A": 30.0}; the dialect checks the addresses (wrong usage otherwise)."""
     found: dict[str, float] = {}
     for text in texts:
-        m = _ARGUMENT.fullmatch(text.strip())
+        m = re.fullmatch(_ARGUMENT, text.strip())
         if m is None:
             raise UsageError(f"--arg takes LETTER=NUMBER (A=30), got {text!r}")
         letter = m.group(1).upper()

@@ -579,12 +579,14 @@ def _shift(ctx: Context, kind: str, q: float | None, first: str, second: str) ->
     return {(first, second)[index]: sign * abs(float(q or 0.0))}
 
 
-_COMMENT: Final = re.compile(r"\([^)]*\)?")
+# A pattern text, not a compiled pattern: compiled where first used (``re``'s cache), so a start that
+# reports no error compiles none (each ``re.compile`` at import costs every start ~0.3-1M instructions).
+_COMMENT: Final = r"\([^)]*\)?"
 
 
 def _code_column(block: Block, code: str) -> int:
     """Column of the cycle's code in the source text (comments blanked, leading zeros allowed)."""
-    text = _COMMENT.sub(lambda m: " " * len(m.group(0)), (block.text or "").upper())
+    text = re.sub(_COMMENT, lambda m: " " * len(m.group(0)), (block.text or "").upper())
     letter, number = code[:1].upper(), code[1:].lstrip("0")
     m = re.search(re.escape(letter) + r"\s*0*" + re.escape(number) + r"(?![\d.])", text)
     return m.start() + 1 if m else 1

@@ -42,7 +42,8 @@ BLOCK_TEMPLATES = ("tool_change", "operation_start", "program_end")
 BUILTIN = frozenset({"program", "source_file", "source_dialect", "target_dialect", "machine", "units", "date",
                      "setup", "tools", "tool", "previous_tool", "operation", "name", "line", "first_use"})
 """Names the translation passes; ``--define`` may not take them (except ``date``, for reproducible output)."""
-_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]{0,63}\Z")
+_NAME = r"[A-Za-z_][A-Za-z0-9_]{0,63}\Z"
+"""Compiled where first used (``--define``), not at every start."""
 _KEEPS = ("Sequence", "ToolSelect", "ToolChange", "Comments", "ProgramControl")
 """What a replaced block may hold besides what the template writes."""
 _MODAL = ("units", "distance", "plane", "feed_mode", "work_offset", "return_level", "cycle", "motion")
@@ -72,7 +73,7 @@ def parse_defines(items: Iterable[str]) -> dict[str, str]:
         name, eq, value = item.partition("=")
         if not eq:
             raise UsageError(f"--define takes NAME=VALUE, got {item!r}")
-        if not _NAME.match(name) or keyword.iskeyword(name) or name in ("true", "false", "none", "True",
+        if not re.match(_NAME, name) or keyword.iskeyword(name) or name in ("true", "false", "none", "True",
                                                                          "False", "None", "loop", "self"):
             raise UsageError(f"--define {name!r}: a name is a letter or '_' then letters, digits or '_' "
                              "(at most 64, not a keyword)")

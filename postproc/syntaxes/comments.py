@@ -16,8 +16,9 @@ from typing import Callable
 
 from ..records import record
 
-_BREAKS = re.compile(r"[\x00-\x1f\x7f\u0085\u2028\u2029]")
-"""Line breaks and control characters: a line break ends a ``;`` comment and a block."""
+_BREAKS = dict.fromkeys((*range(0x20), 0x7F, 0x85, 0x2028, 0x2029), " ")
+"""Line breaks and control characters (each made a space, ``str.translate``): a line break ends a ``;`` comment
+and a block. A table, not a regular expression compiled at every start (~0.5M instructions)."""
 
 
 @record(frozen=True)  # made at every start (dialect.py): a dataclass's generated methods cost ~0.4 ms
@@ -39,7 +40,7 @@ class CommentSyntax:
         """``text`` made safe to stand inside a comment: brackets for parentheses, spaces for line breaks
         and control characters, then the controller's own cleaning (``clean``). Whether the comment it
         stands in acts is the whole comment's business (``text``, ``comments``)."""
-        safe = _BREAKS.sub(" ", text.replace("(", "[").replace(")", "]"))
+        safe = text.replace("(", "[").replace(")", "]").translate(_BREAKS)
         return self.clean(safe) if self.clean is not None else safe
 
     def text(self, text: str) -> str:

@@ -22,7 +22,8 @@ from ..errors import UsageError
 from ..frames.affine import INDEX, XYZ, Affine, about, diagonal, rotation, translation
 from ..records import record
 
-_NUMBER: Final = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?\Z")
+_NUMBER: Final = r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?\Z"
+"""Compiled where first used (``--transform``), not at every start."""
 _PLANES: Final = {"xy": ("X", "Y"), "zx": ("Z", "X"), "yz": ("Y", "Z")}
 SYNTAX: Final = ("translate DX,DY[,DZ] | rotate DEG [about C1,C2] [in xy|zx|yz] | mirror x|y|z|xy.. [about V,..] | "
                  "scale S[,SY,SZ] [about X,Y[,Z]], joined by ';'")
@@ -140,7 +141,7 @@ def _numbers(text: str, least: int, most: int, step: str) -> tuple[float, ...]:
         raise UsageError(f"--transform {step!r}: {text!r} should be {many} comma-separated numbers")
     values = []
     for part in parts:
-        if not _NUMBER.match(part):
+        if not re.match(_NUMBER, part):
             raise UsageError(f"--transform {step!r}: {part!r} is not a number")
         value = float(part)
         if not math.isfinite(value) or abs(value) > 1e9:
