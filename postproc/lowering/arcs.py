@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any, Final, Iterator
+from typing import Final, Iterator
 
 from mypy_extensions import mypyc_attr
 
@@ -54,8 +54,7 @@ MIN_TOLERANCE_MM = 1e-4
 R_FORM_TOLERANCE_MM = 0.0005
 """Most an R form may move an arc's centre (half of ``verify``'s default tolerance)."""
 CLEAR_HALF_CHORD_MM: Final = 1e-3
-"""Shortest half chord ``_Rewriter._short_of_half_turn`` judges (a shorter one, a full circle's among them, takes the
-general test)."""
+"""Shortest half chord ``_short_of_half_turn`` judges (a shorter one, a full circle's too: the general test)."""
 WRITE_SLACK_MM = 2 * EXACT
 """What the writer's rounding may move a point (``postproc.numbers.EXACT``, at both ends of a chord)."""
 ARCS: Final = frozenset(("cw", "ccw"))
@@ -157,10 +156,8 @@ class _Arcs(BlockStep):
         return None if len(out) == 1 and out[0] is block else out
 
     def take_move(self, block: Block) -> list[Block] | None:
-        """``take`` for a block that is only a move (``only_move``): a straight move while the position is
-        plain (``_Rewriter.plain``) only moves the position to its words, as ``_track`` does (~2.5k instructions
-        a block compiled through ``take``, ``block`` and ``_track``: this pass runs over every block of every
-        translation to grbl); anything else goes through ``take``."""
+        """``take`` for a block that is only a move: a straight move while the position is ``plain`` moves it to its
+        words, as ``_track`` does (~2.5k instructions a block compiled through ``take``: every grbl translation)."""
         rewriter = self.rewriter
         if rewriter.plain:
             motion = block.sections["Motion"]
@@ -168,9 +165,8 @@ class _Arcs(BlockStep):
                 mode = motion.mode
                 if mode == "linear" or mode == "rapid":
                     position = rewriter.position
-                    axes: dict[str, Any] = motion.axes  # (Any: compiled, a value narrowed to float was unboxed and boxed again)
-                    for axis, value in axes.items():
-                        position[axis] = None if isinstance(value, Expr) else value
+                    for axis, value in motion.axes.items():  # (a float first: cheap compiled, an Expr test is not)
+                        position[axis] = value if isinstance(value, float) or not isinstance(value, Expr) else None
                     return None
         return self.take(block)
 
@@ -196,15 +192,13 @@ class _Rewriter:
         self.scaling = False
         self.restate = False
         """An arc became lines: the next move is written from its sections (a modal G2 it relied on is gone)."""
-        self.position = self.state.position
-        """``state.position`` (the same dictionary, which nothing replaces)."""
+        self.position = self.state.position  # (the same dictionary: nothing replaces it)
         self.plain = False
-        """A straight move that is the whole block (``only_move``) only moves the position to its words: not in
-        a kept cycle's profile, no move to restate, absolute words, no increment addresses (``settle_plain``)."""
+        """A straight move alone in its block only moves the position to its words (``settle_plain``)."""
         self.settle_plain()
 
     def settle_plain(self) -> None:
-        """Say again whether a straight move is plain (``plain``), after a block that may have changed that."""
+        """``plain``: not in a kept cycle's profile, no move to restate, absolute words, no increment addresses."""
         self.plain = not self.in_profile and not self.restate and self.state.distance != "incremental" \
             and not self.ctx.increments
 
@@ -416,14 +410,10 @@ class _Rewriter:
         return motions
 
     def _short_of_half_turn(self, motion: Motion, incremental: bool, slack_share: float) -> bool:
-        """The R arc (its words numbers) is clearly short of half a turn: R rounded by ``slack`` either way
-        moves its centre less than half of ``R_FORM_TOLERANCE_MM``, so it stays as it is, and only its
-        position is followed (the general test builds the arc and its centre three times: ~60k instructions
-        an R arc compiled). Asked only where the words are the position (absolute, no increment addresses, no
-        diameter) and the start is known; False sends the arc to the general test. The centre lies ``sqrt(R^2 - h^2)`` from the chord's
-        middle (h half the chord), concave in R: R smaller by the slack moves it most
-        (``arc_geometry.r_centre_error``'s worst trial), the bound with a margin of half the tolerance for the
-        rounding of the general test."""
+        """The R arc is clearly short of half a turn: R off by the slack moves its centre under half of
+        ``R_FORM_TOLERANCE_MM`` (the centre lies sqrt(R^2 - h^2) off the chord's middle, h half the chord: concave in
+        R, so R less the slack moves it most, ``r_centre_error``'s worst trial). False: the general test, which
+        builds the arc and its centre three times (~60k instructions compiled), decides."""
         if incremental or self.diameter or self.ctx.increments:
             return False
         a1, a2, _ = PLANE_AXES[self.state.plane]
