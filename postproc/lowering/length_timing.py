@@ -48,7 +48,7 @@ On a lathe the same holds for X and Z together: a Fanuc T/GSK offset (``T0102``,
 each axis is programmed, so the move gets both. ISG and Fagor targets get their D words from
 ``postproc.isg_family.tool_data`` after this step.
 
-One module of about 620 lines (a tenth of it this docstring): both directions follow the same program point
+One module of about 650 lines (a tenth of it this docstring): both directions follow the same program point
 (``_follow``, ``_Frame``) and the same reference-return rules, which a split would have to share back.
 """
 
