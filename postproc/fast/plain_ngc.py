@@ -63,9 +63,11 @@ class NgcPlainLane(BlockLane):
         if state.cycle is not None or extra.get(NO_MOTION_KEY, False):
             return False  # cycle words, or axis words after a cycle cancel: the general path (which alone
             # sets the no-motion mark; a motion code read here leaves it unset, as the general path's False)
-        for key in self.own_state:
-            if key in extra:
-                return False  # the dialect reads the block further itself (``after_sections``)
+        own_state = self.own_state
+        if own_state:  # (an empty set's loop is an iterator a block: ~320 instructions)
+            for key in own_state:
+                if key in extra:
+                    return False  # the dialect reads the block further itself (``after_sections``)
         real = self.real
         # The words' values gathered apart and the block's ``values`` made once the lane is sure of the block
         # (``postproc.fast.plain``'s ``PlainLane.read`` says why).
