@@ -14,6 +14,7 @@ from .boring import BoringExpansion
 from .drilling import DrillingExpansion
 from .expansion import CycleExpansion
 from .fine_boring import FineBoringExpansion
+from .hole_ends import hole_cycle_end  # lowering follows a hole cycle's end through it
 from .manual_boring import ManualBoringExpansion
 from .peck_drilling import PeckDrillingExpansion
 from .resolve import EXPANSIONS, CannedCycleResolveSyntax
@@ -26,7 +27,7 @@ XML_CLASSES: tuple[type[XmlNode], ...] = (CannedCycle, CannedCycleResolveSyntax,
 __all__ = [
     "BackBoringExpansion", "BoringExpansion", "CannedCycle", "CannedCycleResolveSyntax", "CycleExpansion",
     "DrillingExpansion", "FineBoringExpansion", "ManualBoringExpansion", "PeckDrillingExpansion", "TappingExpansion",
-    "XML_CLASSES", "register",
+    "XML_CLASSES", "hole_cycle_end", "register",
 ]
 
 

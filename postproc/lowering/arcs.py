@@ -44,7 +44,6 @@ from ..ir.state import MM_PER_INCH, PLANE_AXES, ModalState, changes_nothing
 from .lower import BlockStep, LoweringStep, run_blocks
 from .arc_geometry import Arc, chord_points, r_centre_error, r_pieces, signed_radius, split
 from .point_after import cycle_end
-from ..cycles.section import CannedCycle
 
 FORMS: Final = ("lines", "ijk", "r")
 SETTLE: Final = "settle"
@@ -250,7 +249,7 @@ class _Rewriter:
         if rare and ("CannedCycle" in sections or "LatheCycle" in sections and compound is None):
             self.unknown()  # a native cycle ends where its controller's rules say
             cycle = sections.get("CannedCycle")
-            if isinstance(cycle, CannedCycle):  # a hole cycle: over its last hole at its return level
+            if cycle is not None:  # a hole cycle: over its last hole at its return level
                 self.state.position.update(cycle_end(cycle) or {})
         return out
 

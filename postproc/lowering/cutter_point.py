@@ -19,12 +19,11 @@ from mypy_extensions import mypyc_attr
 from ..context import Context
 from ..errors import ProgramError, UnsupportedError
 from ..ir.expr import Expr
-from ..ir import Block, CompoundMotion, Motion
+from ..ir import Block, CompoundMotion, Motion, Section
 from ..compensation.cutter_radius import Item
 from ..compensation.geometry_for import cutter_for
 from ..compensation.rules import CutterRules
 from ..compensation.tool_table import ToolTable
-from ..cycles.section import CannedCycle
 from ..interp.control import LABEL
 from .point_after import RETURNS, compound_end, cycle_end, loses_after, unknown_axes
 from .rule_trial import RuleTrial
@@ -214,7 +213,7 @@ class ProgrammedPoint:
         cycle = sections.get("CannedCycle")
         if LABEL in sections:
             self._lose()  # a jump's target: reached from elsewhere too (its own move is followed below)
-        if isinstance(cycle, CannedCycle) and "MachineCoordinates" not in sections:
+        if cycle is not None and "MachineCoordinates" not in sections:
             self._track_cycle(cycle)  # a hole cycle (or a repeat of it): kept native, or its expansion not made yet
         elif isinstance(compound, CompoundMotion) and "MachineCoordinates" not in sections:
             self._track_compound(compound)
@@ -241,7 +240,7 @@ class ProgrammedPoint:
         """The point is not known after this block (``point_after``)."""
         self.pos = {axis: None for axis in self.pos}
 
-    def _track_cycle(self, cycle: CannedCycle) -> None:
+    def _track_cycle(self, cycle: Section) -> None:
         """Where a hole cycle the target keeps native leaves the tool (``point_after.cycle_end``): its last hole,
         at the level the cycle returns to."""
         end = cycle_end(cycle)

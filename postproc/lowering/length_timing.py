@@ -68,7 +68,6 @@ from ..ir.keys import watches_none
 from ..compensation.tool_table import ToolTable
 from ..setup.machine_setup import MachineSetup
 from ..setup.work_offsets import declared_offsets, offset_beyond_frame
-from ..cycles.section import CannedCycle
 from ..interp.control import LABEL
 from .lower import BlockStep, LoweringStep, still_moving
 from .point_after import FOLLOWED, compound_end, cycle_end, loses_after
@@ -548,7 +547,7 @@ def _follow(block: Block, pos: dict[str, float | None], absolute: bool, in_force
         for axis in pos:
             pos[axis] = None  # a jump's target: reached from elsewhere too (``point_after``)
     cycle = sections.get("CannedCycle")
-    if isinstance(cycle, CannedCycle) and "CompoundMotion" not in sections:
+    if cycle is not None and "CompoundMotion" not in sections:
         end = cycle_end(cycle)  # a hole cycle kept native ends over its last hole at its return level
         for axis in pos:
             pos[axis] = None if end is None else end.get(axis)

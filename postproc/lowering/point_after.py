@@ -21,16 +21,11 @@ Z), never a guess.
 
 from __future__ import annotations
 
-from typing import Final
+from typing import Callable, Final
 
-from ..cycles.expansion import CycleExpansion
-from ..cycles.resolve import EXPANSIONS
-from ..cycles.section import CannedCycle
-from ..errors import PostprocError
 from ..interp.control import CONTROL, LABEL, IfThen
 from ..ir import CompoundMotion, Motion, Section
 from ..ir.expr import Expr
-from ..ir.state import PLANE_AXES
 
 MOVES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
 RETURNS: Final = frozenset(("home", "home2"))
@@ -40,29 +35,27 @@ FOLLOWED: Final = frozenset(("CannedCycle", "LatheCycle", "MachineCoordinates", 
 lost (``loses_after``, a ``LABEL``): a step that keeps a fast path for plain moves sends these blocks the
 general way."""
 
-_BY_KIND: Final[dict[str, CycleExpansion]] = {kind: expansion() for expansion in EXPANSIONS for kind in expansion.KINDS}
-"""Hole cycle kind -> the family expansion that knows where it ends. A family's own expansion (grblHAL's pecks,
-``postproc_grblhal.pecking``) moves differently in the hole and ends as the built-in one: over its last hole at
-the return level (``CycleExpansion.ENDS_OVER_THE_SPOT``)."""
+HoleCycleEnd = Callable[[Section], "dict[str, float] | None"]
+"""Where a hole cycle block (its ``CannedCycle`` section) leaves the tool; None where not known."""
+
+_HOLE_CYCLE_ENDS: list[HoleCycleEnd] = []
+"""Filled by the cycle engine when its package loads (``postproc.cycles.hole_ends``): the cycle engine's own
+steps are lowering steps, so it stands above this package, which asks it through this hook instead of importing
+it (an import would run back up the house)."""
 
 
-def cycle_end(cycle: CannedCycle) -> dict[str, float] | None:
-    """Where a hole cycle block leaves the tool, absolute, program units: the plane's axes and the drilling
-    axis (a block of no hole, K0, where it stood: the axes known before it; a cycle at the spot, with no hole
-    position, the drilling axis alone); None where not known (a kind no family expands, a level the record
-    lacks: the reader refused those already)."""
-    expansion = _BY_KIND.get(cycle.kind)
-    if expansion is None:
-        return None
-    first, second, normal = PLANE_AXES[cycle.plane]
-    try:
-        if first not in cycle.position or second not in cycle.position:
-            # a cycle a lowering step made at the spot where the tool stands (a rigid tap become a tap cycle,
-            # ``cycles.rigid_tap_lowering``): the plane's axes stay, the drilling axis ends at the return level
-            return {normal: expansion.return_level(cycle)}
-        return expansion.end(cycle)
-    except PostprocError:
-        return None
+def follow_hole_cycles(end: HoleCycleEnd) -> None:
+    """The cycle engine tells where its hole cycles end (``postproc.cycles.hole_ends``, once)."""
+    if end not in _HOLE_CYCLE_ENDS:
+        _HOLE_CYCLE_ENDS.append(end)
+
+
+def cycle_end(cycle: Section) -> dict[str, float] | None:
+    """Where a hole cycle block leaves the tool, absolute, program units (``postproc.cycles.hole_ends``): the
+    plane's axes and the drilling axis; None where not known (no cycle engine loaded: no such block was read)."""
+    for end in _HOLE_CYCLE_ENDS:
+        return end(cycle)
+    return None
 
 
 def compound_end(compound: CompoundMotion) -> dict[str, float | None] | None:
