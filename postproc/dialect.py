@@ -343,7 +343,8 @@ class Dialect:
 
     @classmethod
     def capabilities(cls) -> dict[str, object]:
-        """The capability table: every UPPER_CASE attribute that describes the controller."""
+        """The capability table: every UPPER_CASE attribute that describes the controller (not the code that
+        runs it: a ``Lazy`` class a dialect loads on use, its writers and reader, is no capability)."""
         skip = {"NAME", "DESCRIPTION", "READER", "WRITER", "LATHE_WRITER", "PIPELINE_FILE", "LATHE_PIPELINE_FILE", "CYCLE_WORDS",
                 "LOWERING", "COMMENTS", "LINE_RULE", "MACRO_ARGUMENTS"}
         table: dict[str, object] = {}
@@ -353,7 +354,7 @@ class Dialect:
                     table[key] = None if value is None else value.name  # whose rules, by name
                 elif key == "ARC_END":
                     table[key] = value.describe()
-                elif key.isupper() and key not in skip and not key.startswith("_"):
+                elif key.isupper() and key not in skip and not key.startswith("_") and not isinstance(value, Lazy):
                     table[key] = sorted(value) if isinstance(value, frozenset) else \
                         dict(value) if isinstance(value, Mapping) else value
         return table

@@ -111,6 +111,7 @@ class Steps(BlockStep):
         return list(self.walk.finish())
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class Walk:
     """The one walk of blocks through a group of ``BlockStep``s, in order, as the chain of their generators
     would pass them: a block a step expands goes on, block by block, to the next step before the step's next
