@@ -349,9 +349,13 @@ class ProgramSyntax(Syntax):
             for block in interpreter.run(start=len(prefix)):
                 last_was_mark = "TapeMark" in block.sections
                 yield block
-        finally:  # a run ended (or given up) no longer stands anywhere a later step could run a subprogram
+        finally:  # a run ended (or given up) no longer stands anywhere a later step could run a subprogram or read
+            # its parameters: after a trial run (``_check_runs``, ``_vacancy_reason``) the program may be kept as
+            # written, and a step would then evaluate its words with the values that run ended with
             if ctx.run_data.get(RUN_INTERPRETER_KEY) is interpreter:
                 del ctx.run_data[RUN_INTERPRETER_KEY]
+            if ctx.run_data.get(RUN_VARIABLES_KEY) is variables:
+                del ctx.run_data[RUN_VARIABLES_KEY]
         if closing is not None and not last_was_mark:
             yield closing  # the run ended at M30/M2: the tape closes as the source's did
 
