@@ -46,3 +46,30 @@ def test_a_case_is_limited_by_its_cpu_time_not_the_clock() -> None:
             while time.process_time() - start < 5:
                 pass
     assert time.process_time() - start < 1
+
+
+def test_grblhal_calls_run_by_rs274_get_the_arguments_grblhal_hands_the_sub() -> None:
+    """The "grblhal targets" fuzz runs a grblHAL text with o-words in rs274; grblHAL hands a sub the caller's
+    ``#k`` for each argument a call leaves out, rs274 reads 0, so each such call is given them as ``[#k]`` first
+    (hand-written expectations; a comment after the arguments stays last, a call of 30 is as written)."""
+    from tests.support.generators.grblhal_targets import as_grblhal_runs
+
+    rest = "".join(f" [#{k}]" for k in range(3, 31))
+    assert as_grblhal_runs("o100 call [1] [[#2+1]*2]\n") == f"o100 call [1] [[#2+1]*2]{rest}\n"
+    assert as_grblhal_runs("O<a> CALL (x)\r\n") == "O<a> CALL" + "".join(f" [#{k}]" for k in range(1, 31)) + " (x)\r\n"
+    full = "o7 call" + "".join(" [0.]" for _ in range(30)) + "\n"
+    assert as_grblhal_runs(full + "G1 X1\no7 sub\n") == full + "G1 X1\no7 sub\n"
+
+
+@pytest.mark.skipif(not __import__("tests.support.rs274", fromlist=["available"]).available(),
+                    reason="the LinuxCNC interpreter rs274 is not installed")
+def test_the_grblhal_rs274_check_catches_a_call_that_relies_on_rs274s_zero() -> None:
+    """A LinuxCNC program whose call gives no argument (its sub reads 0 for #1) written for grblHAL as it stands
+    would move to X5 on grblHAL (the caller's #1): the check now fails it; with the argument written it passes."""
+    from tests.support.generators.grblhal_targets import as_grblhal_runs
+    from tests.support.generators.macros import moves_agree_with_rs274
+
+    source = "G21 G90 G0 X0 Y0 Z5\n#1=5\no100 sub\nG1 X#1 F100\no100 endsub\no100 call\nM2\n"
+    with pytest.raises(AssertionError, match="move"):
+        moves_agree_with_rs274("linuxcnc", source, as_grblhal_runs(source))
+    moves_agree_with_rs274("linuxcnc", source, as_grblhal_runs(source.replace("o100 call", "o100 call [0]")))

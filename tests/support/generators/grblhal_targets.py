@@ -6,7 +6,8 @@ with G98/G99, repeats, K/L counts, changes of cycle without a cancel).
 A case passes when it is refused with located errors, or when the output reads back in grblHAL, meets
 grblHAL's rules for that build (``grblhal_rules``) and verifies; a program grblHAL keeps symbolic (o-words,
 expressions: grblHAL's are rs274's, ``ngc_flowctrl.c``/``ngc_expr.c``) is also run by ``rs274``, whose moves
-must be the source's.
+must be the source's: with each call's arguments left out written as the caller's ``[#k]`` (what grblHAL hands the
+sub; rs274 reads 0), and not where the text reads a returned value (``#<_value>``: set otherwise than rs274 does).
 """
 
 from __future__ import annotations
@@ -81,9 +82,52 @@ def check(source: str, program: str, build: str) -> str:
         except ErrorList as errs:
             raise AssertionError(f"a second translation is refused: {errs}") from None
         text = out.getvalue()
-        if _COMPUTES.search(text):
-            moves_agree_with_rs274(source, program, text)
+        if _COMPUTES.search(text) and not _RETURNED.search(text):
+            moves_agree_with_rs274(source, program, as_grblhal_runs(text))
     return result
+
+
+_RETURNED = re.compile(r"(?i)#<\s*_value(_returned)?\s*>")
+"""A read of a returned value: grblHAL sets ``#<_value>`` and ``#<_value_returned>`` otherwise than rs274 (zeroed
+at every call, kept by a return without a value, not set by a definition's ``endsub [v]`` that the flow passes,
+unset before the first call: ``postproc_grblhal.variables``), which no rewriting of the text makes rs274 do, so
+such a text is not run by rs274 (the verify of ``check_translation`` still simulates it as grblHAL runs it)."""
+_CALL = re.compile(r"(?i)^(\s*o\S+\s+call)\b(.*)$")
+CALL_ARGUMENTS = 30
+"""``#1``-``#30``: a call's arguments."""
+
+
+def as_grblhal_runs(text: str) -> str:
+    """``text`` with every call given its 30 arguments, those it leaves out as ``[#k]``: the caller's value, which
+    is what grblHAL hands the sub for them [V: ngc_flowctrl.c ``NGCFlowCtrl_Call``, via
+    ``postproc_grblhal.variables``], where rs274 reads 0. So rs274 runs the text's calls as grblHAL does."""
+    lines = []
+    for line in text.splitlines(keepends=True):
+        found = _CALL.match(line.rstrip("\r\n"))
+        if found is not None:
+            head, rest = found.groups()
+            given, tail = _arguments(rest)
+            if given < CALL_ARGUMENTS:
+                extra = "".join(f" [#{k}]" for k in range(given + 1, CALL_ARGUMENTS + 1))
+                line = head + rest[:tail].rstrip() + extra + rest[tail:] + line[len(line.rstrip("\r\n")):]
+        lines.append(line)
+    return "".join(lines)
+
+
+def _arguments(rest: str) -> tuple[int, int]:
+    """The ``[..]`` arguments a call's words after ``call`` give, and where they end (a comment may follow)."""
+    depth = given = end = 0
+    for i, char in enumerate(rest):
+        if char == "[":
+            given += depth == 0
+            depth += 1
+        elif char == "]":
+            depth -= 1
+            if depth == 0:
+                end = i + 1
+        elif depth == 0 and not char.isspace():
+            break
+    return given, end
 
 
 def _case(source: str, program: str, build: str) -> Case:
