@@ -7,9 +7,18 @@ from pathlib import Path
 from typing import Callable
 
 import os
+import sys
 
 import pytest
 from hypothesis import HealthCheck, settings
+
+# pytest rewrites the asserts of every test module as it imports it and keeps the result beside it
+# (tests/__pycache__/*-pytest-*.pyc) only where Python may write byte code: under PYTHONDONTWRITEBYTECODE (set on
+# this machine and in CI) every xdist worker of every run rewrote all ~330 modules again, about two thirds of the
+# collection's CPU (cProfile of `pytest --collect-only`). This conftest is imported before any test module, so
+# from here on the rewritten modules are cached (keyed on each source's mtime and size; written atomically, so two
+# workers may race). The tree already gets .pyc files for the core from `make bytecode`.
+sys.dont_write_bytecode = False
 
 # No per-example deadline nor too-slow health check: the suite shares two cores with other work, and a
 # first example that pays for an import or the plugin registry took over hypothesis's default 200 ms on a
