@@ -303,10 +303,10 @@ class WordWriter(MotionWords):
         if start is not None:
             if "BlockDelete" in sections:  # found by make fuzz: ISG "/ % NAME" was written "%_N_NAME_MPF /",
                 # "O0001 (NAME) /", "(NAME) /": a slash after the header, which no controller reads as a skip
-                err = UnsupportedError("a program header under block delete ('/'): the header names the "
-                                       "program, which the block delete switch cannot skip")
-                err.section = "BlockDelete"
-                raise err
+                skipped = UnsupportedError("a program header under block delete ('/'): the header names the "
+                                           "program, which the block delete switch cannot skip")
+                skipped.section = "BlockDelete"
+                raise skipped
             words.insert(0, self.program_start(start, block))
         self._track(sections)
         text = " ".join([w for w in words if w])
