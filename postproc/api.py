@@ -55,6 +55,22 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
     Raises ``ErrorList`` when the program has errors (``out`` then holds a partial result the caller
     must discard); returns the diagnostics (warnings) otherwise.
     """
+    with gc_paused():  # (the registry and the dialects' modules load in here too: ``_translate``)
+        return _translate(lines, out, file=file, source=source, target=target, setup=setup, registry=registry,
+                          on_unsupported=on_unsupported, level=level, diagnostics=diagnostics, defines=defines,
+                          output_map=output_map, units=units, transform=transform, arcs=arcs)
+
+
+def _translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, target: str,
+               setup: MachineSetup | None = None, registry: Registry | None = None,
+               on_unsupported: str = "error", level: ErrorLevel = ErrorLevel.RAISE,
+               diagnostics: Diagnostics | None = None, defines: dict[str, str] | None = None,
+               output_map: OutputMap | None = None, units: str | None = None,
+               transform: str | ProgramTransform | None = None, arcs: ArcOption | None = None) -> Diagnostics:
+    """``translate`` with the cyclic collector paused (by the caller) from the first line: the registry, the two
+    dialects' readers and writers and the lowering steps are imported here, allocating what lives as long as
+    the process; with the collector on, its collections while they loaded walked everything made before them
+    again (four in a one-line translation, between the registry's own pause, ``postproc.plugins``, and the run's)."""
     registry = registry or default_registry()
     setup = setup or MachineSetup()
     diagnostics = diagnostics or Diagnostics(level)

@@ -306,3 +306,39 @@ def test_a_plain_translation_compiles_no_pattern_of_an_error_report(tmp_path: Pa
     refused = patterns_after(tmp_path, "translate", str(one_line), "--from", "fanuc", "--to", "grbl",
                              "--define", "1x=2", ok=False)
     assert sequences._NAME in refused
+
+
+COLLECTIONS_PROBE = """
+import atexit, gc, os, runpy, sys
+seen = []
+gc.callbacks.append(lambda phase, info: seen.append(info["generation"])
+                    if phase == "start" and "postproc.commands.cli" in sys.modules else None)
+atexit.register(lambda: open(os.environ["MODULES_OUT"], "w").write(
+    "\\n".join(str(g) for g in seen) + ("\\n" if seen else "") + "\\n".join(sorted(sys.modules))))
+sys.argv = ["postproc", *os.environ["ARGS"].split("\\n")]
+runpy.run_module("postproc", run_name="__main__")
+"""
+"""Runs a command and writes the generation of every collection the cyclic collector started once the command
+line was imported (``postproc.commands.launch`` imports it with the collector off), until the exit's own, one a
+line, then the modules loaded (the probe sees the run)."""
+
+
+@pytest.mark.parametrize("args", [("translate", "{program}", "--from", "fanuc", "--to", "grbl"),
+                                  ("translate", "{program}", "--from", "fanuc", "--to", "linuxcnc"),
+                                  ("translate", "{program}", "--from", "fanuc", "--to", "fanuc"),
+                                  ("dialects",)])
+def test_a_short_run_makes_the_collector_walk_nothing(tmp_path: Path, one_line: Path, args: tuple[str, ...]) -> None:
+    """A one-line translation and ``postproc dialects`` load their command's modules, the plugins and the dialects'
+    readers, writers and steps with the cyclic collector paused, and freeze what they made
+    (``postproc.commands.command_line.collector_paused``, ``postproc.plugins``, ``postproc.api.translate``): no
+    collection runs before the exit's. With the collector on while they loaded, 33 ran in a one-line
+    translation (each walking every object the imports had made so far) and 14 in ``postproc dialects``."""
+    out = tmp_path / "collections.txt"
+    env = dict(os.environ, HOME=str(tmp_path), MODULES_OUT=str(out),
+               ARGS="\n".join(arg.format(program=one_line) for arg in args))
+    done = subprocess.run([sys.executable, "-c", COLLECTIONS_PROBE], cwd=tmp_path, env=env, capture_output=True,
+                          text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    lines = out.read_text().splitlines()
+    assert "postproc.plugins" in lines  # the probe saw the run
+    assert [line for line in lines if line.isdigit()] == []
