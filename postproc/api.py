@@ -16,7 +16,6 @@ from .interp.control import GotoLabel
 from .dialect import Dialect
 from .errors import Diagnostics, ErrorLevel, PostprocError, UsageError
 from .ir import Block
-from .interp.jump_targets import jump_past_end, missing_fallthrough
 from .lowering.arcs import ArcOption, RewriteArcs, settle_arc_ends
 from .lowering.lower import lower_for
 from .plugins import Registry, default_registry
@@ -28,9 +27,6 @@ from .ir.source_map import OutputMap
 from .syntaxes.syntax import Pipeline
 from .context import Context
 from .frames.lowering import EVALUATE_KEY
-from .frames.parameters import frame_parameter_read
-from .interp.numbers import foreign_number
-from .interp.returns import foreign_return
 from .patterns.lowering import POINT_BY_POINT_KEY
 from .transforms import ProgramOptions, ProgramTransform, program_options, transform_program
 
@@ -149,6 +145,11 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context, registry: 
     target's reading pipeline imports its readers and syntax objects, which a plain translation never uses."""
 
     def reason(body: list[Block]) -> str | None:
+        # (imported where a program that computes is first judged, never by a plain translation)
+        from .frames.parameters import frame_parameter_read
+        from .interp.jump_targets import jump_past_end, missing_fallthrough
+        from .interp.numbers import foreign_number
+        from .interp.returns import foreign_return
         if not dst.PROGRAMS:
             return f"the {dst.NAME} dialect has no variables or control flow"
         falls = missing_fallthrough(body)

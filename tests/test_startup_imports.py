@@ -41,17 +41,21 @@ ONLY_FOR_XML = ("lxml",)
 OTHER_DIALECTS = ("dialects.fagor", "dialects.gsk", "dialects.isg", "postproc_grbl", "postproc_grblhal",
                   "postproc_linuxcnc", "postproc_mach3")
 """Every installed dialect but Fanuc (the built-ins and the plugins in plugins/)."""
+KEEP_CHECK = ("postproc.interp.jump_targets", "postproc.frames.parameters", "postproc.interp.numbers",
+              "postproc.interp.returns")
+"""What judges whether a program that computes can be kept symbolic for its target (``postproc.api._keep_check``)."""
 NOT_FOR_A_PLAIN_TRANSLATION = ("postproc.transforms.carry", "postproc.transforms.units", "postproc.rs274.lathe_cycles",
                                "postproc.cycles.turning", "postproc_linuxcnc.block_syntax", "postproc_linuxcnc.program",
                                "postproc.rs274.macro_jumps", "postproc.rs274.lean_controller",
                                "postproc.cycles.lathe_lowering", "postproc.cycles.lathe_offsets",
                                "postproc.rs274.lathe_tool_index", "postproc_linuxcnc.lathe_writer",
-                               "postproc.rs274.ngc_lathe_writer", "postproc.rs274.ngc_lathe", "postproc.geometry.thread_lead")
+                               "postproc.rs274.ngc_lathe_writer", "postproc.rs274.ngc_lathe", "postproc.geometry.thread_lead",
+                               *KEEP_CHECK)
 """What a plain mill translation to LinuxCNC has no use for: the program transforms' work (``--transform``,
 ``--units``: ``postproc.transforms.apply``), a lathe's cycle reader and turning cycles (``LatheCycleSyntax`` is
 registered lazily), a lathe's lowering (its cycles' expansion and the turret's index:
 ``postproc.core_plugin``) and writing (LinuxCNC's thread feed step imports it for a lathe only),
-the target's reading side (its block syntax and program step: the keep check and
+the target's reading side and what judges a program that computes (its block syntax and program step: the keep check and
 ``TARGET_OMITS_VACANT`` build the target's pipeline when a program that computes first asks, ``postproc.api``),
 and the lowering steps of other targets that registering their dialects named (Fanuc's ``number_jumps``, grbl's
 and grblHAL's lean-controller steps: each imported when a translation first lowers for that target)."""
@@ -100,7 +104,8 @@ def test_a_plain_translation_loads_no_transform_lathe_or_target_reader(tmp_path:
 
 
 @pytest.mark.parametrize("program, target, options, wanted", [
-    ("#1=2.\nG0 X#1 Y[#1+1]\nM30\n", "linuxcnc", (), ("postproc_linuxcnc.block_syntax", "postproc_linuxcnc.program")),
+    ("#1=2.\nG0 X#1 Y[#1+1]\nM30\n", "linuxcnc", (), ("postproc_linuxcnc.block_syntax", "postproc_linuxcnc.program",
+                                                      *KEEP_CHECK)),
     ("G0 X1. Y2.\nM30\n", "linuxcnc", ("--units", "inch"), ("postproc.transforms.units",)),
     ("G0 X1. Y2.\nM30\n", "linuxcnc", ("--transform", "translate 1,2"), ("postproc.transforms.carry",)),
     ("G0 X20. Z2. S500 M3\nG1 Z-10. F0.2\nM30\n", "linuxcnc",
