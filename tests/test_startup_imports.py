@@ -272,6 +272,28 @@ def test_listing_the_dialects_runs_only_the_dialect_hook(tmp_path: Path) -> None
                               "postproc.patterns", "postproc.frames.measured_entries") if loaded(modules, name)] == []
 
 
+def test_listing_the_dialects_loads_no_cycle_engine_or_target_step(tmp_path: Path) -> None:
+    """Every family base that names its hole-cycle rules imports ``postproc.cycles.semantics``, which runs the cycle
+    package's ``__init__``: it imports none of the engine (expansions, the resolve step, where a cycle ends), nor
+    does a dialect's registration import the lowering steps its ``LOWERING`` names (``LazyStep``: ISG's and
+    LinuxCNC's jump nesting, grblHAL's comment after the end)."""
+    modules = warm_modules_after(tmp_path, "dialects")
+    assert "postproc.cycles.semantics" in modules and "postproc.commands.dialect_table" in modules  # the probe saw the run
+    assert [name for name in ("postproc.cycles.resolve", "postproc.cycles.expansion", "postproc.cycles.drilling",
+                              "postproc.cycles.back_boring", "postproc.cycles.section", "postproc.cycles.hole_ends",
+                              "postproc.lowering.structured_jumps", "postproc.lowering.program_end")
+            if name in modules] == []
+
+
+def test_the_cycle_package_names_its_xml_classes_as_they_are() -> None:
+    """``postproc.cycles.register`` registers the package's XML classes by name (``XML_NAMES``): each name is the
+    class's own ``XNAME`` and every class of ``XML_CLASSES`` (the section, the resolve step, every expansion) is
+    there."""
+    from postproc import cycles
+    assert {cls.XNAME: f"{cls.__module__}:{cls.__qualname__}" for cls in cycles.XML_CLASSES} == \
+        {name: f"postproc.cycles.{target}" for name, target in cycles.XML_NAMES.items()}
+
+
 PATTERNS_PROBE = """
 import atexit, os, re, runpy, sys
 atexit.register(lambda: open(os.environ["MODULES_OUT"], "w").write(
