@@ -16,7 +16,6 @@ from .interp.control import GotoLabel
 from .dialect import Dialect
 from .errors import Diagnostics, ErrorLevel, PostprocError, UsageError
 from .ir import Block
-from .interp.jump_targets import jump_past_end, missing_fallthrough
 from .lowering.arcs import ArcOption, RewriteArcs, settle_arc_ends
 from .lowering.lower import lower_for
 from .plugins import Registry, default_registry
@@ -28,9 +27,6 @@ from .ir.source_map import OutputMap
 from .syntaxes.syntax import Pipeline
 from .context import Context
 from .frames.lowering import EVALUATE_KEY
-from .frames.parameters import frame_parameter_read
-from .interp.numbers import foreign_number
-from .interp.returns import foreign_return
 from .patterns.lowering import POINT_BY_POINT_KEY
 from .transforms import ProgramOptions, ProgramTransform, program_options, transform_program
 
@@ -55,6 +51,22 @@ def translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, targ
     Raises ``ErrorList`` when the program has errors (``out`` then holds a partial result the caller
     must discard); returns the diagnostics (warnings) otherwise.
     """
+    with gc_paused():  # (the registry and the dialects' modules load in here too: ``_translate``)
+        return _translate(lines, out, file=file, source=source, target=target, setup=setup, registry=registry,
+                          on_unsupported=on_unsupported, level=level, diagnostics=diagnostics, defines=defines,
+                          output_map=output_map, units=units, transform=transform, arcs=arcs)
+
+
+def _translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, target: str,
+               setup: MachineSetup | None = None, registry: Registry | None = None,
+               on_unsupported: str = "error", level: ErrorLevel = ErrorLevel.RAISE,
+               diagnostics: Diagnostics | None = None, defines: dict[str, str] | None = None,
+               output_map: OutputMap | None = None, units: str | None = None,
+               transform: str | ProgramTransform | None = None, arcs: ArcOption | None = None) -> Diagnostics:
+    """``translate`` with the cyclic collector paused (by the caller) from the first line: the registry, the two
+    dialects' readers and writers and the lowering steps are imported here, allocating what lives as long as
+    the process; with the collector on, its collections while they loaded walked everything made before them
+    again (four in a one-line translation, between the registry's own pause, ``postproc.plugins``, and the run's)."""
     registry = registry or default_registry()
     setup = setup or MachineSetup()
     diagnostics = diagnostics or Diagnostics(level)
@@ -133,6 +145,11 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context, registry: 
     target's reading pipeline imports its readers and syntax objects, which a plain translation never uses."""
 
     def reason(body: list[Block]) -> str | None:
+        # (imported where a program that computes is first judged, never by a plain translation)
+        from .frames.parameters import frame_parameter_read
+        from .interp.jump_targets import jump_past_end, missing_fallthrough
+        from .interp.numbers import foreign_number
+        from .interp.returns import foreign_return
         if not dst.PROGRAMS:
             return f"the {dst.NAME} dialect has no variables or control flow"
         falls = missing_fallthrough(body)

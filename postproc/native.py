@@ -26,7 +26,7 @@ import sys
 from importlib.machinery import ModuleSpec
 from pathlib import Path
 from types import ModuleType
-from typing import Mapping, NamedTuple, Sequence
+from typing import Mapping, Sequence
 
 _ROOT = os.path.dirname(os.path.dirname(os.path.realpath(__file__)))
 ROOT = Path(_ROOT)
@@ -44,16 +44,34 @@ every start ~1 ms."""
 MANIFEST_HEADER = "postproc compiled manifest 1"
 
 
-class Compiled(NamedTuple):
-    """One line of the manifest: a compiled module's file, and the source it was compiled from."""
+class Compiled:
+    """One line of the manifest: a compiled module's file, and the source it was compiled from. (A plain class:
+    as a ``typing.NamedTuple`` its creation compiled each field's annotation and generated the tuple's code, ~1.5M
+    instructions of every start.)"""
 
-    file: str
-    """Relative to the compiled tree."""
-    source: str | None = None
-    """Relative to the root; None for the group's shared library."""
-    sha256: str = ""
-    size: int = -1
-    mtime_ns: int = -1
+    __slots__ = ("file", "source", "sha256", "size", "mtime_ns")
+
+    def __init__(self, file: str, source: str | None = None, sha256: str = "", size: int = -1,
+                 mtime_ns: int = -1) -> None:
+        self.file = file
+        """Relative to the compiled tree."""
+        self.source = source
+        """Relative to the root; None for the group's shared library."""
+        self.sha256 = sha256
+        self.size = size
+        self.mtime_ns = mtime_ns
+
+    def _key(self) -> tuple[str, str | None, str, int, int]:
+        return self.file, self.source, self.sha256, self.size, self.mtime_ns
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Compiled) and self._key() == other._key()
+
+    def __hash__(self) -> int:
+        return hash(self._key())
+
+    def __repr__(self) -> str:
+        return f"Compiled{self._key()!r}"
 
 
 class CompiledFinder:
@@ -109,8 +127,9 @@ def _plan(root: str, environ: Mapping[str, str]) -> tuple[str, dict[str, str]]:
     if built_for != suffix:
         return f"compiled for {built_for}, not {suffix}", {}
     files: dict[str, str] = {}
+    tree, top = compiled + os.sep, root + os.sep  # (paths by concatenation: os.path.join is Python code)
     for name, entry in modules.items():
-        file = os.path.join(compiled, entry.file)
+        file = tree + entry.file
         try:
             is_file = stat.S_ISREG(os.stat(file).st_mode)
         except (OSError, ValueError):
@@ -119,7 +138,7 @@ def _plan(root: str, environ: Mapping[str, str]) -> tuple[str, dict[str, str]]:
             return f"the compiled build is incomplete ({entry.file} is missing)", {}
         source = entry.source
         if source is not None:
-            if not _fresh(os.path.join(root, source), entry):
+            if not _fresh(top + source, entry):
                 return f"{source} changed since it was compiled (run make install)", {}
         files[name] = file
     return "", files

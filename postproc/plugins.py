@@ -5,9 +5,11 @@ Nothing here names a concrete dialect; built-ins arrive through their entry poin
 
 from __future__ import annotations
 
+import contextlib
 import functools
+import gc
 import types
-from typing import Iterable
+from typing import Iterable, Iterator
 
 import pluggy
 
@@ -136,16 +138,32 @@ def installed_dialects() -> dict[str, type[Dialect]]:
     other hooks register (the core's syntax objects, cycles, frames and lowering steps: ``core_plugin``)."""
     if default_registry.cache_info().currsize:
         return default_registry().dialects
-    return collect_dialects(make_plugin_manager())
+    with _collector_paused():
+        return collect_dialects(make_plugin_manager())
 
 
 @functools.cache
 def default_registry() -> Registry:
     """The registry of every installed plugin, built on first use."""
-    register_sections(DEFAULT)
-    register_expressions(DEFAULT)
-    register_control(DEFAULT)
-    registry = Registry(make_plugin_manager(), DEFAULT)
-    for step in registry.lowerings:
-        register_transform(step)
+    with _collector_paused():
+        register_sections(DEFAULT)
+        register_expressions(DEFAULT)
+        register_control(DEFAULT)
+        registry = Registry(make_plugin_manager(), DEFAULT)
+        for step in registry.lowerings:
+            register_transform(step)
     return registry
+
+
+@contextlib.contextmanager
+def _collector_paused() -> Iterator[None]:
+    """The cyclic collector off while the plugins load: they only allocate what lives as long as the registry
+    (modules, classes, tables), and its collections while they did walked everything made before them again
+    (``postproc.commands.command_line.handler`` says what that cost)."""
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if enabled:
+            gc.enable()

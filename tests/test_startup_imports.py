@@ -41,17 +41,21 @@ ONLY_FOR_XML = ("lxml",)
 OTHER_DIALECTS = ("dialects.fagor", "dialects.gsk", "dialects.isg", "postproc_grbl", "postproc_grblhal",
                   "postproc_linuxcnc", "postproc_mach3")
 """Every installed dialect but Fanuc (the built-ins and the plugins in plugins/)."""
+KEEP_CHECK = ("postproc.interp.jump_targets", "postproc.frames.parameters", "postproc.interp.numbers",
+              "postproc.interp.returns")
+"""What judges whether a program that computes can be kept symbolic for its target (``postproc.api._keep_check``)."""
 NOT_FOR_A_PLAIN_TRANSLATION = ("postproc.transforms.carry", "postproc.transforms.units", "postproc.rs274.lathe_cycles",
                                "postproc.cycles.turning", "postproc_linuxcnc.block_syntax", "postproc_linuxcnc.program",
                                "postproc.rs274.macro_jumps", "postproc.rs274.lean_controller",
                                "postproc.cycles.lathe_lowering", "postproc.cycles.lathe_offsets",
                                "postproc.rs274.lathe_tool_index", "postproc_linuxcnc.lathe_writer",
-                               "postproc.rs274.ngc_lathe_writer", "postproc.rs274.ngc_lathe", "postproc.geometry.thread_lead")
+                               "postproc.rs274.ngc_lathe_writer", "postproc.rs274.ngc_lathe", "postproc.geometry.thread_lead",
+                               *KEEP_CHECK)
 """What a plain mill translation to LinuxCNC has no use for: the program transforms' work (``--transform``,
 ``--units``: ``postproc.transforms.apply``), a lathe's cycle reader and turning cycles (``LatheCycleSyntax`` is
 registered lazily), a lathe's lowering (its cycles' expansion and the turret's index:
 ``postproc.core_plugin``) and writing (LinuxCNC's thread feed step imports it for a lathe only),
-the target's reading side (its block syntax and program step: the keep check and
+the target's reading side and what judges a program that computes (its block syntax and program step: the keep check and
 ``TARGET_OMITS_VACANT`` build the target's pipeline when a program that computes first asks, ``postproc.api``),
 and the lowering steps of other targets that registering their dialects named (Fanuc's ``number_jumps``, grbl's
 and grblHAL's lean-controller steps: each imported when a translation first lowers for that target)."""
@@ -100,7 +104,8 @@ def test_a_plain_translation_loads_no_transform_lathe_or_target_reader(tmp_path:
 
 
 @pytest.mark.parametrize("program, target, options, wanted", [
-    ("#1=2.\nG0 X#1 Y[#1+1]\nM30\n", "linuxcnc", (), ("postproc_linuxcnc.block_syntax", "postproc_linuxcnc.program")),
+    ("#1=2.\nG0 X#1 Y[#1+1]\nM30\n", "linuxcnc", (), ("postproc_linuxcnc.block_syntax", "postproc_linuxcnc.program",
+                                                      *KEEP_CHECK)),
     ("G0 X1. Y2.\nM30\n", "linuxcnc", ("--units", "inch"), ("postproc.transforms.units",)),
     ("G0 X1. Y2.\nM30\n", "linuxcnc", ("--transform", "translate 1,2"), ("postproc.transforms.carry",)),
     ("G0 X20. Z2. S500 M3\nG1 Z-10. F0.2\nM30\n", "linuxcnc",
@@ -267,6 +272,28 @@ def test_listing_the_dialects_runs_only_the_dialect_hook(tmp_path: Path) -> None
                               "postproc.patterns", "postproc.frames.measured_entries") if loaded(modules, name)] == []
 
 
+def test_listing_the_dialects_loads_no_cycle_engine_or_target_step(tmp_path: Path) -> None:
+    """Every family base that names its hole-cycle rules imports ``postproc.cycles.semantics``, which runs the cycle
+    package's ``__init__``: it imports none of the engine (expansions, the resolve step, where a cycle ends), nor
+    does a dialect's registration import the lowering steps its ``LOWERING`` names (``LazyStep``: ISG's and
+    LinuxCNC's jump nesting, grblHAL's comment after the end)."""
+    modules = warm_modules_after(tmp_path, "dialects")
+    assert "postproc.cycles.semantics" in modules and "postproc.commands.dialect_table" in modules  # the probe saw the run
+    assert [name for name in ("postproc.cycles.resolve", "postproc.cycles.expansion", "postproc.cycles.drilling",
+                              "postproc.cycles.back_boring", "postproc.cycles.section", "postproc.cycles.hole_ends",
+                              "postproc.lowering.structured_jumps", "postproc.lowering.program_end")
+            if name in modules] == []
+
+
+def test_the_cycle_package_names_its_xml_classes_as_they_are() -> None:
+    """``postproc.cycles.register`` registers the package's XML classes by name (``XML_NAMES``): each name is the
+    class's own ``XNAME`` and every class of ``XML_CLASSES`` (the section, the resolve step, every expansion) is
+    there."""
+    from postproc import cycles
+    assert {cls.XNAME: f"{cls.__module__}:{cls.__qualname__}" for cls in cycles.XML_CLASSES} == \
+        {name: f"postproc.cycles.{target}" for name, target in cycles.XML_NAMES.items()}
+
+
 PATTERNS_PROBE = """
 import atexit, os, re, runpy, sys
 atexit.register(lambda: open(os.environ["MODULES_OUT"], "w").write(
@@ -306,3 +333,39 @@ def test_a_plain_translation_compiles_no_pattern_of_an_error_report(tmp_path: Pa
     refused = patterns_after(tmp_path, "translate", str(one_line), "--from", "fanuc", "--to", "grbl",
                              "--define", "1x=2", ok=False)
     assert sequences._NAME in refused
+
+
+COLLECTIONS_PROBE = """
+import atexit, gc, os, runpy, sys
+seen = []
+gc.callbacks.append(lambda phase, info: seen.append(info["generation"])
+                    if phase == "start" and "postproc.commands.cli" in sys.modules else None)
+atexit.register(lambda: open(os.environ["MODULES_OUT"], "w").write(
+    "\\n".join(str(g) for g in seen) + ("\\n" if seen else "") + "\\n".join(sorted(sys.modules))))
+sys.argv = ["postproc", *os.environ["ARGS"].split("\\n")]
+runpy.run_module("postproc", run_name="__main__")
+"""
+"""Runs a command and writes the generation of every collection the cyclic collector started once the command
+line was imported (``postproc.commands.launch`` imports it with the collector off), until the exit's own, one a
+line, then the modules loaded (the probe sees the run)."""
+
+
+@pytest.mark.parametrize("args", [("translate", "{program}", "--from", "fanuc", "--to", "grbl"),
+                                  ("translate", "{program}", "--from", "fanuc", "--to", "linuxcnc"),
+                                  ("translate", "{program}", "--from", "fanuc", "--to", "fanuc"),
+                                  ("dialects",)])
+def test_a_short_run_makes_the_collector_walk_nothing(tmp_path: Path, one_line: Path, args: tuple[str, ...]) -> None:
+    """A one-line translation and ``postproc dialects`` load their command's modules, the plugins and the dialects'
+    readers, writers and steps with the cyclic collector paused, and freeze what they made
+    (``postproc.commands.command_line.collector_paused``, ``postproc.plugins``, ``postproc.api.translate``): no
+    collection runs before the exit's. With the collector on while they loaded, 33 ran in a one-line
+    translation (each walking every object the imports had made so far) and 14 in ``postproc dialects``."""
+    out = tmp_path / "collections.txt"
+    env = dict(os.environ, HOME=str(tmp_path), MODULES_OUT=str(out),
+               ARGS="\n".join(arg.format(program=one_line) for arg in args))
+    done = subprocess.run([sys.executable, "-c", COLLECTIONS_PROBE], cwd=tmp_path, env=env, capture_output=True,
+                          text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    lines = out.read_text().splitlines()
+    assert "postproc.plugins" in lines  # the probe saw the run
+    assert [line for line in lines if line.isdigit()] == []

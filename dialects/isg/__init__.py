@@ -17,12 +17,13 @@ from postproc.ir.state import MM_PER_INCH
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.hookspecs import hookimpl
 from postproc.lowering.lazy_step import LazyStep
-from postproc.lowering.structured_jumps import nest_jumps_keeping_equality
 from postproc.rs274.order_of_execution import stops_before_motion
 from postproc.setup.machine_setup import MachineSetup
 from postproc.syntaxes.syntax import Pipeline
 from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
+
+nest_jumps_keeping_equality = LazyStep("postproc.lowering.structured_jumps:nest_jumps_keeping_equality")
 
 if TYPE_CHECKING:
     from postproc.context import Context

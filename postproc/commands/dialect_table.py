@@ -14,12 +14,14 @@ from typing import Any, Mapping
 
 from ..dialect import Dialect, Lazy
 from ..plugins import installed_dialects
+from .command_line import collector_paused
 
 
 
 def cmd_dialects(args: argparse.Namespace) -> int:
     """``postproc dialects [--format table|json]``."""
-    info = dialect_info(installed_dialects())
+    with collector_paused():  # the plugins load (``command_line.collector_paused``)
+        info = dialect_info(installed_dialects())
     if args.format == "json":
         import json
         print(json.dumps(info, indent=2))

@@ -18,6 +18,7 @@ from ..output.outfile import BUFFER, ENCODING, write_output
 from ..plugins import default_registry
 from ..setup.machine_setup import MachineSetup, check_named_file, load_setup
 from ..xmlio import parse_xml_file, to_bytes
+from .command_line import collector_paused
 from .progress import AboveProgress, progress_for
 
 
@@ -96,6 +97,12 @@ def cmd_translate(args: argparse.Namespace) -> int:
         if args.tolerance is None:
             args.tolerance = 0.001
         return run_batch(args, renumber)
+    with collector_paused():  # one program: its run and the modules it loads (``command_line.collector_paused``)
+        return _translate_one(args, renumber)
+
+
+def _translate_one(args: argparse.Namespace, renumber: tuple[int, int | None] | None) -> int:
+    """``postproc translate`` of one program (``cmd_translate``)."""
     (path,) = args.input
     setup = _setup(args.machine, args.lib)
     if args.normalize:

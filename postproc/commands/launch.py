@@ -22,6 +22,8 @@ def run() -> None:
     gc.disable()
     try:
         from .cli import main
+        from . import command_line
+        command_line.FREEZE_IMPORTS = True  # and what the command's own modules make (``command_line.handler``)
     finally:
         gc.freeze()
         if was_enabled:

@@ -48,7 +48,6 @@ from postproc.rs274.cycle_semantics import RS274 as RS274_CYCLES
 from postproc.grbl_family.dialect import GrblFamily
 from postproc.hookspecs import hookimpl
 from postproc.lowering.lazy_step import LazyStep
-from postproc.lowering.program_end import comment_numbered_subs_after_end
 from postproc.output.line_format import LineRule
 from postproc.output.writer_base import Writer
 from postproc.rs274.cycle_words import rs274_cycle_words
@@ -58,6 +57,8 @@ from postproc.syntaxes.syntax import Pipeline
 from postproc.xmlio import XFactory
 
 from .codes import CODES
+
+comment_numbered_subs_after_end = LazyStep("postproc.lowering.program_end:comment_numbered_subs_after_end")
 
 if TYPE_CHECKING:
     from postproc.context import Context

@@ -19,7 +19,6 @@ from postproc.dialect import Dialect, Lazy, Reader
 from postproc.rs274.cycle_semantics import RS274 as RS274_CYCLES
 from postproc.rs274.order_of_execution import stops_after_motion
 from postproc.rs274.arc_ends import RS274NGC_ARC_END
-from postproc.lowering.structured_jumps import nest_forward_jumps
 from postproc.errors import Diagnostics
 from postproc.hookspecs import hookimpl
 from postproc.output.line_format import LineRule
@@ -36,6 +35,8 @@ from postproc.xmlio import XFactory
 from .codes import CODES
 
 from .active_comments import COMMENTS, warn_active_comments
+
+nest_forward_jumps = LazyStep("postproc.lowering.structured_jumps:nest_forward_jumps")
 
 NATIVE = frozenset({
     "drill", "drill_dwell", "peck_chip", "peck_deep", "tap", "tap_left", "bore_feed", "bore_stop",
