@@ -1,5 +1,5 @@
 """A tool length change without Z after a move in machine coordinates, translated towards a controller that
-applies it at the next absolute Z (``postproc.lowering.length_timing``, ``_Frame``; issue 26, audit26).
+applies it at the next absolute Z (``postproc.lowering.length_timing``, ``length_point.MachineFrame``; issue 26, audit26).
 
 The hand-written Haas pattern ``G53 Z0.`` (home), ``T1 M06``, ``G43 H01`` alone, ``G00 X.. Y..``: the source
 (Fanuc rule: the length applies at the next move) keeps the programmed Z while its XY rapid takes the length, so

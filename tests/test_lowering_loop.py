@@ -296,3 +296,18 @@ def test_the_targets_own_steps_are_lowering_steps(target: str) -> None:
     dialect = default_registry().dialect(target)
     generators = [getattr(s, "__name__", s) for s in dialect.LOWERING if not isinstance(s, LoweringStep)]
     assert generators == []
+
+
+def test_a_reference_return_alone_goes_the_general_way() -> None:
+    """A block that is only a reference return (``G28 Z0.``: ``Motion('home')``) is no plain move (``plain_move``):
+    a step that skips plain moves still sees it, and a step that follows them gets it through ``take`` (where
+    ``measured_entries`` notes the axes it takes home). By hand: ``n`` sees only ``r``, ``c`` takes ``r`` the
+    general way and ``p`` as a move."""
+    seen: list[str] = []
+    n = _Log("n", seen, moves=False)
+    c = _MoveLog("c", seen)
+    home = _block("r", True)
+    home.sections["Motion"] = Motion("home", {"Z": 0.0})
+    out = _texts(run_blocks(iter([_block("p", True), home]), [n, c]))
+    assert out == ["p", "r"]
+    assert seen == ["c-move:p", "c:p", "n:r", "c:r", "n:end", "c:end"]

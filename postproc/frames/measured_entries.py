@@ -57,7 +57,10 @@ write_measured_entries = WriteMeasuredEntries()
 
 @mypyc_attr(allow_interpreted_subclasses=True)
 class _Entries(BlockStep):
-    """One run: a move is its business (a reference return takes axes home), so ``moves`` stays True."""
+    """One run. A plain move (``lowering.lower.plain_move``: no reference return) is its business only while a
+    reference return has taken an axis home (``homed``: the move may bring it back), so ``moves`` is that: a CAM
+    program's moves go past unseen (~400 instructions a block compiled), its reference returns come through
+    ``take``."""
 
     def __init__(self, ctx: Context, target: type[Dialect]) -> None:
         super().__init__()
@@ -65,15 +68,19 @@ class _Entries(BlockStep):
         self.target = target
         self.family = target.family()
         self.run = _Run(ctx)
+        self.moves = False
 
     def take(self, block: Block) -> list[Block] | None:
-        return self._take(block, watches_none(block.sections, _WATCHED))
+        out = self._take(block, watches_none(block.sections, _WATCHED))
+        self.moves = bool(self.run.homed)
+        return out
 
     def take_move(self, block: Block) -> list[Block] | None:
-        """``take`` for a block the loop found only a move (``only_move``): it holds none of ``_WATCHED``, and is
-        not asked again (~270 instructions a block compiled); a block given back as it came stays only a move
-        (``still_moving`` for the rest)."""
-        return still_moving(block, self._take(block, True)) if self.run.homed else self._take(block, True)
+        """``take`` for a block the loop found only a plain move (while ``homed``): it holds none of ``_WATCHED``,
+        and is not asked again; a block given back as it came stays only a move (``still_moving`` for the rest)."""
+        out = still_moving(block, self._take(block, True))
+        self.moves = bool(self.run.homed)
+        return out
 
     def _take(self, block: Block, quiet: bool) -> list[Block] | None:
         """``take``; ``quiet``: the block holds none of ``_WATCHED`` (``watches_none``)."""

@@ -48,8 +48,8 @@ On a lathe the same holds for X and Z together: a Fanuc T/GSK offset (``T0102``,
 each axis is programmed, so the move gets both. ISG and Fagor targets get their D words from
 ``postproc.isg_family.tool_data`` after this step.
 
-One module of about 650 lines (a tenth of it this docstring): both directions follow the same program point
-(``_follow``, ``_Frame``) and the same reference-return rules, which a split would have to share back.
+Where the program stands (its Z after each block, the work offset under a machine-coordinate Z, the length
+a change puts in force) is followed in ``postproc.lowering.length_point``; this module decides when a change applies.
 """
 
 from __future__ import annotations
@@ -60,23 +60,17 @@ from mypy_extensions import mypyc_attr
 
 from ..context import Context
 from ..dialect import Dialect
-from ..errors import Location, PostprocError, UnsupportedError
+from ..errors import Location, UnsupportedError
 from ..ir.expr import Binary, Expr, Num, Var
-from ..ir import (Block, CompoundMotion, CutterCompensation, DataSetting, DistanceMode, Motion, Section,
-                  ToolLengthOffset, Units, WorkOffset)
+from ..ir import Block, CutterCompensation, DataSetting, DistanceMode, Motion, Section, ToolLengthOffset, Units
 from ..ir.keys import watches_none
 from ..compensation.tool_table import ToolTable
-from ..setup.machine_setup import MachineSetup
-from ..setup.work_offsets import declared_offsets, offset_beyond_frame
-from ..interp.control import LABEL
 from .lower import BlockStep, LoweringStep, still_moving
-from .point_after import FOLLOWED, compound_end, cycle_end, loses_after
+from .length_point import AXIS, MM_PER_INCH, PLAIN, MachineFrame, follow_point, length_in_force
+from .point_after import FOLLOWED
 
-AXIS: Final = "Z"
-MM_PER_INCH: Final = 25.4
 _WATCHED: Final = frozenset(("ToolLengthOffset", "Motion", "CompoundMotion", "CycleCall", "DistanceMode", "Units",
                              "WorkOffset", "CoordinateSet", "DataSetting", "CutterCompensation", "RigidTap")) | FOLLOWED
-_PLAIN: Final = frozenset(("rapid", "linear", "cw", "ccw"))
 _STRAIGHT: Final = frozenset(("rapid", "linear"))
 """The modes whose block moves nothing without an axis word (an arc without one is a full circle)."""
 _RETURNS: Final = frozenset(("home", "home2"))
@@ -237,7 +231,7 @@ class _Complete(BlockStep):
         self.compensating = False  # cutter radius compensation is on (the target reads no position then)
         self.diverged: set[str] = set()  # axes whose program point on the target a change written alone has moved
         self.unplaced = set(axes)  # axes nothing has placed or re-expressed since the start: only they are read
-        self.frame = _Frame(ctx.setup)  # what puts a machine-coordinate Z in the program's frame
+        self.frame = MachineFrame(ctx.setup)  # what puts a machine-coordinate Z in the program's frame
 
     def take(self, block: Block) -> list[Block] | None:
         return self._take(block, watches_none(block.sections, _STATE))
@@ -259,7 +253,7 @@ class _Complete(BlockStep):
         if pending is None and quiet:  # the common block: at most a plain move
             motion = sections.get("Motion")
             if isinstance(motion, Motion):  # (typed: its fields are read natively, not by name)
-                plain = motion.mode in _PLAIN
+                plain = motion.mode in PLAIN
                 words = motion.axes
                 absolute = self.absolute
                 for axis in axes:
@@ -349,7 +343,7 @@ class _Complete(BlockStep):
                 _refuse(ctx, self.target, pending[1], f"{clash} follows it")
                 out.extend(_release(held, pending[0]))
                 self.pending = None
-                _follow(block, pos, absolute, in_force, None if lathe else table, inch, frame.beyond(inch))
+                follow_point(block, pos, absolute, in_force, None if lathe else table, inch, frame.beyond(inch))
                 out.append(block)
                 return out
             held.append(block)
@@ -379,9 +373,9 @@ class _Complete(BlockStep):
                 block.changed()
                 restore = True
             elif returns and not lathe and _incremental_z_return(block, absolute) and _shifted_return(
-                    block, _length(self.applied, table, inch), _length(in_force, table, inch)):
+                    block, length_in_force(self.applied, table, inch), length_in_force(in_force, table, inch)):
                 pass
-            elif (isinstance(motion, Motion) and motion.mode in _PLAIN and absolute
+            elif (isinstance(motion, Motion) and motion.mode in PLAIN and absolute
                     and all(pos[a] is not None or (not compensating and a in target.POSITION_READS and a in unplaced
                                                    and a not in diverged and _reads_here(sections)) for a in missing)
                     and "MachineCoordinates" not in sections and "CompoundMotion" not in sections):
@@ -407,7 +401,7 @@ class _Complete(BlockStep):
                 block.changed()
             self.pending = None
             self.applied = in_force
-        _follow(block, pos, absolute, in_force, None if lathe else table, inch, frame.beyond(inch))
+        follow_point(block, pos, absolute, in_force, None if lathe else table, inch, frame.beyond(inch))
         frame.placed(sections, pos.get(AXIS) is not None)
         if unplaced:
             motion = sections.get("Motion")
@@ -416,7 +410,7 @@ class _Complete(BlockStep):
         diverged = self.diverged
         if diverged:
             motion = sections.get("Motion")
-            if (isinstance(motion, Motion) and motion.mode in _PLAIN and absolute
+            if (isinstance(motion, Motion) and motion.mode in PLAIN and absolute
                     and "MachineCoordinates" not in sections):
                 diverged.difference_update(motion.axes)
         if restore:
@@ -537,130 +531,16 @@ def _refuse(ctx: Context, target: type[Dialect], at: Location, why: str) -> None
         f"target's, and {why}: program Z beside the length change", at))
 
 
-def _follow(block: Block, pos: dict[str, float | None], absolute: bool, in_force: tuple[str, object, object],
-            table: ToolTable | None, inch: bool, beyond: float | None) -> None:
-    """Move ``pos`` (program units) to the point after the block's motion, None where it is not known. A
-    machine-coordinate Z is the programmed Z plus the work offset in force (``beyond``, ``_Frame``) plus the
-    mill's length in force (``in_force`` read in ``table``; None on a lathe: not followed)."""
-    sections = block.sections
-    if LABEL in sections:
-        for axis in pos:
-            pos[axis] = None  # a jump's target: reached from elsewhere too (``point_after``)
-    cycle = sections.get("CannedCycle")
-    if cycle is not None and "CompoundMotion" not in sections:
-        end = cycle_end(cycle)  # a hole cycle kept native ends over its last hole at its return level
-        for axis in pos:
-            pos[axis] = None if end is None else end.get(axis)
-        return
-    compound = sections.get("CompoundMotion")
-    if isinstance(compound, CompoundMotion) and "MachineCoordinates" not in sections and not loses_after(sections):
-        moved = compound_end(compound)  # an expanded cycle: its moves are absolute
-        for axis in pos:
-            if moved is None:
-                pos[axis] = None
-            elif axis in moved:
-                pos[axis] = moved[axis]
-        return
-    if compound is not None or "RigidTap" in sections or "CycleCall" in sections or loses_after(sections):
-        for axis in pos:
-            pos[axis] = None  # a native lathe cycle's end, a call's, a modal cycle call's: not followed here
-        return
-    motion = sections.get("Motion")
-    if not isinstance(motion, Motion):
-        return
-    axes = motion.axes
-    for axis in pos:
-        value = axes.get(axis)
-        if value is None:
-            continue
-        if isinstance(value, Expr) or motion.mode not in _PLAIN:
-            pos[axis] = None
-        elif "MachineCoordinates" in sections:
-            length = None if table is None or axis != AXIS else _length(in_force, table, inch)
-            pos[axis] = None if length is None or beyond is None else float(value) - beyond - length
-        elif absolute:
-            pos[axis] = float(value)
-        else:
-            known = pos[axis]
-            pos[axis] = None if known is None else known + float(value)
-
-
-@mypyc_attr(allow_interpreted_subclasses=True)
-class _Frame:
-    """What lies between a machine-coordinate Z and the programmed one (besides the length): the set-up's offset of
-    the active work system and the external one (``postproc.setup.work_offsets``, as the simulation subtracts it).
-    Only a declared offset counts: where the set-up gives the active system none (or no ``<WorkOffsets>`` at all,
-    which the simulation takes as zero on both sides of ``verify``, so it could not see a wrong guess), or after a
-    G10 work offset, G92/G52 or a frame change (values only the run knows here), the programmed Z after a machine
-    move is not known, and a length change that needs it is a located error (issue 26: writing the machine's Z0
-    as the program's Z0 sent a Haas program's first rapid down to the part's zero)."""
-
-    def __init__(self, setup: MachineSetup) -> None:
-        self.declared = declared_offsets(setup, (AXIS,), False)
-        self.system = 1  # G54 (or the dialect's first system) at power-on [K: DIALECTS.md, modal defaults]
-        self.known = True
-        self.machine_z = False
-        """The programmed Z is unknown since a machine-coordinate move whose offset is not known."""
-
-    def follow(self, sections: dict[str, Section]) -> None:
-        work = sections.get("WorkOffset")
-        if isinstance(work, WorkOffset):
-            self.system = work.index
-        setting = sections.get("DataSetting")
-        if "CoordinateSet" in sections or "FrameChange" in sections or (
-                isinstance(setting, DataSetting) and setting.table.startswith("work_offset")):
-            self.known = False
-
-    def placed(self, sections: dict[str, Section], known: bool) -> None:
-        if known:
-            self.machine_z = False
-        elif "MachineCoordinates" in sections:
-            self.machine_z = True
-
-    def why(self) -> str:
-        """What the located error adds where a machine move left the programmed Z unknown."""
-        if not self.machine_z:
-            return ""
-        if not self.known:
-            return " (a move in machine coordinates after a work offset, a coordinate shift or a frame set in the program)"
-        return (f" (a move in machine coordinates: {offset_beyond_frame(AXIS, self.system, {}, self.declared)[1]}"
-                f" to put it in work coordinates)")
-
-    def beyond(self, inch: bool) -> float | None:
-        """The offset in program units; None where it is not known."""
-        if not self.known:
-            return None
-        value = offset_beyond_frame(AXIS, self.system, {}, self.declared)[0]
-        return None if value is None else value / MM_PER_INCH if inch else value
-
-
-def _length(key: tuple[str, object, object], table: ToolTable, inch: bool) -> float | None:
-    """The length a ``_key`` puts in force, program units; None where the set-up does not give it."""
-    mode, register, length = key
-    scale = MM_PER_INCH if inch else 1.0
-    if mode == "cancel":
-        return 0.0
-    if mode == "dynamic":
-        return float(length) if isinstance(length, (int, float)) else None
-    if not isinstance(register, int) or mode not in ("positive", "negative"):
-        return None
-    try:
-        value = table.length(register)
-    except PostprocError:
-        return None
-    return (value if mode == "positive" else -value) / scale
-
-
 def _moves_named(block: Block, axes: tuple[str, ...]) -> bool:
     """The block's move names every one of ``axes``, absolutely or by an increment: a target that applies a
     change when the axis moves (``Dialect.LENGTH_AT_AXIS_MOVE``) applies it in that move, as the source does."""
     motion = block.sections.get("Motion")
-    return isinstance(motion, Motion) and motion.mode in _PLAIN and all(a in motion.axes for a in axes)
+    return isinstance(motion, Motion) and motion.mode in PLAIN and all(a in motion.axes for a in axes)
 
 
 def _sets_z(block: Block, absolute: bool, axes: tuple[str, ...]) -> bool:
     """The block's move ends at every one of ``axes`` programmed absolutely, in work or in machine
     coordinates: where the two rules agree."""
     motion = block.sections.get("Motion")
-    return (isinstance(motion, Motion) and motion.mode in _PLAIN and all(a in motion.axes for a in axes)
+    return (isinstance(motion, Motion) and motion.mode in PLAIN and all(a in motion.axes for a in axes)
             and (absolute or "MachineCoordinates" in block.sections))

@@ -11,11 +11,11 @@ feature, as sqlglot's ``preprocess`` does for SQL dialects. Two sources of steps
 A step is a block-stream transform ``step(blocks, ctx, target) -> blocks`` (a function, often a
 generator), or a ``LoweringStep``: an object whose ``start`` gives the run's ``BlockStep``, which takes the
 blocks one at a time. ``lower_for`` runs consecutive ``BlockStep``s as one loop over the stream
-(``run_blocks``) instead of a generator per step, and a block that is only a move (``ir.keys.only_move``,
-most blocks of a CAM program) skips every step whose ``moves`` says such a block is not its business
-there: a step costs a few instructions on it instead of a generator's resumption (~150-250 compiled,
-issue 30). Both forms compute the same: a ``LoweringStep`` called as a function runs its ``BlockStep`` alone
-through the same loop.
+(``run_blocks``) instead of a generator per step, and a block that is only a plain move (``plain_move``: a move
+that is no reference return, and at most its block number; most blocks of a CAM program) skips every step whose
+``moves`` says such a block is not its business there: a step costs a few instructions on it instead of a
+generator's resumption (~150-250 compiled, issue 30). Both forms compute the same: a ``LoweringStep`` called as
+a function runs its ``BlockStep`` alone through the same loop.
 """
 
 from __future__ import annotations
@@ -26,8 +26,7 @@ from mypy_extensions import mypyc_attr
 
 from ..context import Context
 from ..dialect import Dialect
-from ..ir import Block
-from ..ir.keys import only_move
+from ..ir import Block, Motion, Section
 
 Lowering = Callable[[Iterator[Block], Context, type[Dialect]], Iterator[Block]]
 """A lowering step: ``step(blocks, ctx, target)`` -> blocks, a pure block-stream transform."""
@@ -41,8 +40,8 @@ TRANSFORMS: list[Lowering] = []
 class BlockStep:
     """One run of a ``LoweringStep``: its state, and what it makes of each block.
 
-    ``take`` gets every block the step before it gives, in order (a block that is only a move through
-    ``take_move``), except blocks that are only a move (``only_move``) while ``moves`` is False: the step
+    ``take`` gets every block the step before it gives, in order (a block that is only a plain move through
+    ``take_move``), except blocks that are only a plain move (``plain_move``) while ``moves`` is False: the step
     says so when such a block can neither change its state nor be changed by it (it may set ``moves`` again at
     any block, in its own ``take``, ``take_move`` or ``finish``: the loop looks at it after each). ``take``
     returns None for the block as it is (perhaps changed in place), or the blocks that replace it (none:
@@ -57,10 +56,11 @@ class BlockStep:
         raise NotImplementedError
 
     def take_move(self, block: Block) -> list[Block] | None:
-        """``take`` for a block that is only a move (``only_move``, asked by the loop: a step that follows
-        every move overrides this to skip asking its own block again); the same result as ``take``, except
-        that None means the block is still only a move: one ``take`` changed in place into more (a length
-        change put on it) comes back as ``[block]``, so the steps after it see what it is (``still_moving``)."""
+        """``take`` for a block that is only a plain move (``plain_move``, asked by the loop: a step that follows
+        every move overrides this to skip asking its own block again: its ``Motion`` is no reference return); the
+        same result as ``take``, except that None means the block is still only a move: one ``take`` changed in
+        place into more (a length change put on it) comes back as ``[block]``, so the steps after it see what it
+        is (``still_moving``)."""
         return still_moving(block, self.take(block))
 
     def finish(self) -> list[Block]:
@@ -68,11 +68,30 @@ class BlockStep:
 
 
 def still_moving(block: Block, out: list[Block] | None) -> list[Block] | None:
-    """``out``, what a step's ``take`` gave for ``block``, a block that was only a move, as ``take_move`` gives it:
-    ``[block]`` where ``take`` changed the block in place so that it is no longer only a move."""
-    if out is None and not only_move(block.sections):
+    """``out``, what a step's ``take`` gave for ``block``, a block that was only a plain move, as ``take_move`` gives
+    it: ``[block]`` where ``take`` changed the block in place so that it is no longer only a plain move."""
+    if out is None and not plain_move(block.sections):
         return [block]
     return out
+
+
+def plain_move(sections: dict[str, Section]) -> bool:
+    """The block holds a move (``Motion``) that is no reference return and at most a ``Sequence`` (block number)
+    besides: a step that watches neither key has nothing to look for in it but the move. A reference return
+    (G28/G30, ``Motion('home')``) goes the general way (``take``): a step that follows only where the tool is taken
+    home (``measured_entries``) skips the rest. Most blocks of a CAM program; the loop asks it once a block
+    (``Walk.through``)."""
+    size = len(sections)
+    if size == 2:
+        if "Sequence" not in sections:
+            return False
+    elif size != 1:
+        return False
+    motion = sections.get("Motion")
+    if not isinstance(motion, Motion):
+        return False
+    mode = motion.mode
+    return mode != "home" and mode != "home2"
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -142,12 +161,12 @@ class Walk:
     def through(self, block: Block, start: int) -> Block | None:
         """``block`` through the steps from ``start`` on: the block that comes out of the last, or None where a
         step gave several blocks or none (``made``, to go on from step ``at``: ``given``). A block that is only
-        a move (``only_move``, asked once, and again for a block a step gave) skips a step whose ``moves`` is
+        a plain move (``plain_move``, asked once, and again for a block a step gave) skips a step whose ``moves`` is
         False and goes to the others' ``take_move``, which gives it back as ``[block]`` where it changed it in
         place into more (``still_moving``: a later step must not skip it, nor take it as only a move)."""
         steps = self.steps
         n = len(steps)
-        plain = only_move(block.sections)
+        plain = plain_move(block.sections)
         i = start
         while i < n:
             if plain:
@@ -170,7 +189,7 @@ class Walk:
                 continue
             if len(out) == 1:
                 block = out[0]
-                plain = only_move(block.sections)
+                plain = plain_move(block.sections)
                 continue
             self.made = out
             self.at = i
@@ -215,7 +234,7 @@ def lower_for(blocks: Iterator[Block], ctx: Context, target: type[Dialect], on_u
     ``then`` (a run's own last steps: ``translate``'s arc pass); consecutive ``LoweringStep``s run as one
     loop (``run_blocks``). A function step that gives back the stream it was given has nothing to do in this
     program (``convert_inverse_time`` where nothing is in inverse time...): it does not split the loop, whose
-    every level would cost each block a generator's resumption and another ``only_move`` (~700 instructions
+    every level would cost each block a generator's resumption and another ``plain_move`` (~700 instructions
     compiled, four such levels in a translation to LinuxCNC)."""
     ctx.on_unsupported = on_unsupported
     stream = blocks
