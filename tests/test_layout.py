@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.support.import_graph import find_circle, imports, module_name, root_of
+from tests.support.import_graph import find_circle, imports, module_name, named_modules, root_of
 
 ROOT = Path(__file__).resolve().parents[1]
 CORE = sorted((ROOT / "postproc").rglob("*.py"))
@@ -48,8 +48,9 @@ def test_a_built_in_dialect_imports_no_other_dialect_and_only_public_postproc_na
 
 @pytest.mark.parametrize("path", CORE + DIALECTS, ids=lambda p: str(p.relative_to(ROOT)))
 def test_the_core_and_built_in_dialects_import_no_plugin(path: Path) -> None:
+    """By an import statement or by name (a ``Lazy``, ``register_lazy`` or ``LazyStep`` target)."""
     in_core = path.is_relative_to(ROOT / "postproc")
-    for module, _, line in imports(path):
+    for module, line in [(m, line) for m, _, line in imports(path)] + named_modules(path):
         top = module.split(".")[0]
         assert not top.startswith("postproc_"), f"{path.name}:{line} imports the plugin {module}"
         assert not (in_core and top == "dialects"), f"{path.name}:{line} imports the dialect {module}"
