@@ -17,11 +17,12 @@ Built-in dialects and plugins stand on top of the registry layer: they may impor
 
 from __future__ import annotations
 
+import functools
 from pathlib import Path
 
 import pytest
 
-from tests.support.import_graph import arrows_not_down, find_circle, imports, unit_graph
+from tests.support.import_graph import Graph, arrows_not_down, find_circle, imports, unit_graph
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -52,7 +53,12 @@ ORDER = [unit for _, units, _ in LAYERS for unit in units]
 PLUGIN_CEILING = "plugins"
 """The highest unit a dialect or plugin may import (the registry layer's top)."""
 
-CORE_GRAPH = unit_graph(ROOT, "postproc")
+
+
+@functools.cache
+def core_graph() -> Graph:
+    """The graph between the core's units (read once a session, when a test first asks)."""
+    return unit_graph(ROOT, "postproc")
 
 
 def test_the_order_places_every_unit_once() -> None:
@@ -63,12 +69,12 @@ def test_the_order_places_every_unit_once() -> None:
 
 
 def test_the_core_packages_import_without_a_circle() -> None:
-    circle = find_circle(CORE_GRAPH)
+    circle = find_circle(core_graph())
     assert circle is None, "import circle between packages: " + " -> ".join(circle or [])
 
 
 def test_every_core_import_goes_down_the_layers() -> None:
-    wrong = arrows_not_down(CORE_GRAPH, ORDER)
+    wrong = arrows_not_down(core_graph(), ORDER)
     assert not wrong, "\n".join(wrong)
 
 

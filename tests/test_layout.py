@@ -104,6 +104,8 @@ def test_a_module_over_600_lines_says_why_in_its_docstring(path: Path) -> None:
     if name in OVER_WITHOUT_A_REASON:
         assert over, f"{name} is no longer over {MODULE_LINES} lines: take it out of OVER_WITHOUT_A_REASON"
         return
+    if not over:
+        return
     docstring = ast.get_docstring(ast.parse(text)) or ""
-    assert not over or SIZE_REASON.search(docstring), (
+    assert SIZE_REASON.search(docstring), (
         f"{name} has {text.count(chr(10))} lines: split it, or say in its docstring why it is one module of that size")

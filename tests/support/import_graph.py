@@ -11,6 +11,7 @@ import later by name) counts as an import of that module too: a deferred import 
 from __future__ import annotations
 
 import ast
+import functools
 import re
 from pathlib import Path
 
@@ -31,34 +32,45 @@ def module_name(path: Path, root: Path) -> str:
     return ".".join(path.relative_to(root).with_suffix("").parts).removesuffix(".__init__")
 
 
+@functools.lru_cache(maxsize=None)
+def _read(path: Path) -> tuple[tuple[tuple[str, tuple[str, ...], int, int], ...], tuple[tuple[str, int], ...]]:
+    """One walk of the file's tree: its import statements as (module as written, names, line, level) and its
+    strings that name a module (``named_modules``). Kept per file: several tests read the same tree, and a
+    parse of the whole core takes seconds on a loaded machine."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    found: list[tuple[str, tuple[str, ...], int, int]] = []
+    named: list[tuple[str, int]] = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            found.extend((a.name, (), node.lineno, 0) for a in node.names)
+        elif isinstance(node, ast.ImportFrom):
+            found.append((node.module or "", tuple(a.name for a in node.names), node.lineno, node.level))
+        elif isinstance(node, ast.Constant) and isinstance(node.value, str) and _MODULE_TEXT.fullmatch(node.value):
+            named.append((node.value.partition(":")[0], node.lineno))
+    return tuple(found), tuple(named)
+
+
 def imports(path: Path, root: Path | None = None) -> list[tuple[str, list[str], int]]:
     """(absolute module, imported names, line) of every import statement in the file, functions and
     ``if TYPE_CHECKING:`` included. ``root``: what dotted names are relative to (default ``root_of``)."""
     root = root_of(path) if root is None else root
-    tree = ast.parse(path.read_text(encoding="utf-8"))
     package = module_name(path, root)
     if path.name != "__init__.py":
         package = package.rpartition(".")[0]
     out: list[tuple[str, list[str], int]] = []
-    for node in ast.walk(tree):
-        if isinstance(node, ast.Import):
-            out.extend((a.name, [], node.lineno) for a in node.names)
-        elif isinstance(node, ast.ImportFrom):
-            module = node.module or ""
-            if node.level:
-                base = package.split(".")
-                base = base[:len(base) - node.level + 1]
-                module = ".".join(base + ([module] if module else []))
-            out.append((module, [a.name for a in node.names], node.lineno))
+    for module, names, line, level in _read(path)[0]:
+        if level:
+            base = package.split(".")
+            base = base[:len(base) - level + 1]
+            module = ".".join(base + ([module] if module else []))
+        out.append((module, list(names), line))
     return out
 
 
 def named_modules(path: Path) -> list[tuple[str, int]]:
     """(module, line) of every string constant in the file that is a whole dotted module path, with an
     optional ``:name`` (a deferred import by name); whether the module exists is the caller's to check."""
-    tree = ast.parse(path.read_text(encoding="utf-8"))
-    return [(node.value.partition(":")[0], node.lineno) for node in ast.walk(tree)
-            if isinstance(node, ast.Constant) and isinstance(node.value, str) and _MODULE_TEXT.fullmatch(node.value)]
+    return list(_read(path)[1])
 
 
 Graph = dict[str, dict[str, list[str]]]
