@@ -54,7 +54,6 @@ PLUGIN_CEILING = "plugins"
 """The highest unit a dialect or plugin may import (the registry layer's top)."""
 
 
-
 @functools.cache
 def core_graph() -> Graph:
     """The graph between the core's units (read once a session, when a test first asks)."""
