@@ -82,14 +82,23 @@ EXTENSIONS = sorted([*(ROOT / "dialects").rglob("*.py"), *(ROOT / "plugins").glo
 
 @pytest.mark.parametrize("path", EXTENSIONS, ids=lambda p: str(p.relative_to(ROOT)))
 def test_a_dialect_or_plugin_imports_the_core_only_up_to_the_registry(path: Path) -> None:
-    ceiling = ORDER.index(PLUGIN_CEILING)
-    for module, names, line in imports(path):
+    wrong = above_the_ceiling(imports(path), ORDER, PLUGIN_CEILING)
+    assert not wrong, f"{path.relative_to(ROOT)}: " + "; ".join(wrong)
+
+
+def above_the_ceiling(found: list[tuple[str, list[str], int]], order: list[str], ceiling: str) -> list[str]:
+    """The imports of ``postproc`` units placed above ``ceiling`` in ``order`` (``imports``' triples)."""
+    top = order.index(ceiling)
+    wrong = []
+    for module, names, line in found:
         parts = module.split(".")
         if parts[0] != "postproc":
             continue
         units = parts[1:2] or names  # ``from postproc import simulate`` names its unit
-        above = [u for u in units if u in ORDER and ORDER.index(u) > ceiling]
-        assert not above, f"{path.relative_to(ROOT)}:{line} imports {module} {names}: above the registry layer"
+        above = [u for u in units if u in order and order.index(u) > top]
+        if above:
+            wrong.append(f"line {line} imports {module} {names}: above {ceiling}")
+    return wrong
 
 
 # -- the checker itself, on graphs small enough to see by eye ------------------------------------------------
@@ -130,3 +139,12 @@ def test_the_reader_counts_lazy_type_checking_relative_and_by_name_imports(tmp_p
         "high": {"low": ["pkg/high/inner/deep.py:1"]},
     }
     assert find_circle(graph) == ["high", "low", "high"]
+
+
+def test_the_ceiling_refuses_a_planted_import_above_it() -> None:
+    order = ["ir", "plugins", "fast", "api"]
+    found = [("postproc.ir.block", ["Block"], 1), ("postproc.plugins", ["default_registry"], 2), ("re", [], 3)]
+    assert above_the_ceiling(found, order, "plugins") == []
+    found += [("postproc.fast.lane", ["lane"], 4), ("postproc", ["api", "ir"], 5)]
+    assert above_the_ceiling(found, order, "plugins") == [
+        "line 4 imports postproc.fast.lane ['lane']: above plugins", "line 5 imports postproc ['api', 'ir']: above plugins"]
