@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import io
 import random
-import re
 
 import pytest
 
@@ -23,10 +22,8 @@ from postproc.errors import Diagnostics, ErrorList
 from postproc.setup.machine_setup import MachineSetup
 from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
-from tests.support.rs274 import available, run_rs274
+from tests.support.rs274 import available, run_rs274, straight_moves_with_length
 
-_MOVE = re.compile(r"(STRAIGHT_TRAVERSE|STRAIGHT_FEED)\(([^)]*)\)")
-_OFFSET = re.compile(r"USE_TOOL_LENGTH_OFFSET\(\s*([-\d.]+)\s+([-\d.]+)\s+([-\d.]+)")
 PROGRAM = "G21 G90 G17\nG0 X0 Y0 Z40\nG43.1 Z2.5\nG1 X10 F100\nG1 Z-1\nG49\nG0 X5\nM2\n"
 
 
@@ -55,20 +52,12 @@ def _our_moves(text: str, dialect: str = "linuxcnc") -> list[tuple[float, float,
 
 def _rs274_moves(text: str) -> list[tuple[float, float, float, float]]:
     """rs274's moves: programmed X, Y, Z and the controlled Z (programmed + the length in force), mm."""
-    length = 0.0
     out: list[tuple[float, float, float, float]] = []
-    for call in run_rs274(text):
-        offset = _OFFSET.search(call)
-        if offset:
-            length = float(offset.group(3))
-            continue
-        move = _MOVE.search(call)
-        if move:
-            x, y, z = (float(v) for v in move.group(2).split(",")[:3])
-            point = (x, y, z, round(z + length, 4))
-            if out and (out[-1][0], out[-1][1], out[-1][3]) == (x, y, point[3]):
-                continue  # the machine does not move (rs274 prints it; a toolpath leaves it out)
-            out.append(point)
+    for x, y, z, _, length in straight_moves_with_length(run_rs274(text)):
+        point = (x, y, z, round(z + length, 4))
+        if out and (out[-1][0], out[-1][1], out[-1][3]) == (x, y, point[3]):
+            continue  # the machine does not move (rs274 prints it; a toolpath leaves it out)
+        out.append(point)
     return out
 
 

@@ -13,22 +13,19 @@ Lengths are whole hundredths of an inch (exact in the inch table rs274 reads and
 from __future__ import annotations
 
 import io
-import re
 
 import pytest
 
 from postproc.api import translate
 from postproc.errors import Diagnostics
 from postproc.simulate.toolpath import toolpath_events
-from tests.support.rs274 import available, run_rs274
+from tests.support.rs274 import available, run_rs274, straight_moves_with_length
 from tests.support.tools import with_tools
 
 pytestmark = pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
 
 LENGTHS_INCH = {1: 2.0, 2: 0.75, 3: 1.25}
 SETUP = with_tools(lengths={n: v * 25.4 for n, v in LENGTHS_INCH.items()})
-_MOVE = re.compile(r"(STRAIGHT_TRAVERSE|STRAIGHT_FEED)\(([^)]*)\)")
-_OFFSET = re.compile(r"USE_TOOL_LENGTH_OFFSET\(\s*([-\d.]+)\s+([-\d.]+)\s+([-\d.]+)")
 
 PROGRAMS = {
     "change on the next line": "G17 G90 G71\nT1 D1\nM6\nG0 X10 Y10 Z5\nG1 Z-1 F100\nG1 X20\nM30\n",
@@ -61,16 +58,11 @@ def _rs274_points(text: str) -> tuple[list[tuple[float, float, float]], list[str
     """rs274's controlled points (programmed point, Z plus the length in force) and its calls."""
     table = "".join(f"T{n} P{n} Z{v} D0.1\n" for n, v in LENGTHS_INCH.items())
     calls = run_rs274(text, tool_table=table)
-    length = 0.0
     out: list[tuple[float, float, float]] = []
-    for call in calls:
-        if offset := _OFFSET.search(call):
-            length = float(offset.group(3))
-        elif move := _MOVE.search(call):
-            x, y, z = (float(v) for v in move.group(2).split(",")[:3])
-            point = (round(x, 4), round(y, 4), round(z + length, 4))
-            if not out or out[-1] != point:  # rs274 prints a move that moves nothing; a toolpath leaves it out
-                out.append(point)
+    for x, y, z, _, length in straight_moves_with_length(calls):
+        point = (round(x, 4), round(y, 4), round(z + length, 4))
+        if not out or out[-1] != point:  # rs274 prints a move that moves nothing; a toolpath leaves it out
+            out.append(point)
     return out, calls
 
 

@@ -20,8 +20,9 @@ from postproc.errors import Diagnostics, ErrorList
 from postproc.ir.expr import Binary, Expr, Func, Num, Unary, Var
 from postproc.isg_family.expressions import BINARY, FUNCTIONS, P_BASE, spell_expr, spell_word_value
 from postproc.setup.machine_setup import CycleSettings, MachineSetup
-from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
+
+from tests.support.paths import assert_verifies_exactly, moves_and_dwells
 
 from dialects.fagor import Fagor
 from dialects.fagor.reader import FagorReader
@@ -43,23 +44,6 @@ def _errors(text: str, source: str, target: str, setup: MachineSetup | None = No
     with pytest.raises(ErrorList) as caught:
         _translate(text, source, target, setup)
     return [str(e) for e in caught.value.errors]
-
-
-def _moves(text: str, dialect: str, setup: MachineSetup | None = None) -> list[tuple[object, ...]]:
-    """(move, x, y, z) of each motion and ("dwell", seconds) of each dwell."""
-    out: list[tuple[object, ...]] = []
-    for e in toolpath_events(io.StringIO(text), file="in.nc", dialect=dialect, setup=setup):
-        if "move" in e:
-            out.append((e["move"], e["x"], e["y"], e["z"]))
-        elif e.get("event") == "dwell":
-            out.append(("dwell", e["seconds"]))
-    return out
-
-
-def _verify(a: str, b: str, source: str, target: str, setup: MachineSetup | None = None) -> None:
-    report = verify_lines(io.StringIO(a), io.StringIO(b), file_in="a.nc", file_out="b.nc", source=source,
-                          target=target, setup=setup, target_setup=setup, tolerance=0.0)
-    assert report.ok, report.summary() + "\n--- a\n" + a + "--- b\n" + b
 
 
 # -- lossless ------------------------------------------------------------------------------------------
@@ -176,7 +160,7 @@ def test_fanuc_cycles_fagor_numbers_other_things_reach_fagor_expanded() -> None:
     assert not set(codes) & {"G73", "G74", "G76", "G82", "G83", "G84", "G85", "G86", "G87", "G88"}, out
     for kind in ("peck_chip", "tap_left", "peck_deep", "tap", "bore_stop", "back_bore", "bore_manual", "fine_bore"):
         assert f";{kind} from line" in out
-    _verify(program, out, "fanuc", "fagor", setup)
+    assert_verifies_exactly(program, out, "fanuc", "fagor", setup)
 
 
 def test_fanuc_back_boring_needs_an_orientation_fagor_cannot_make() -> None:
@@ -239,7 +223,7 @@ def test_hostile_fagor_input_gives_located_errors(text: str, message: str) -> No
 def test_a_parenthesised_comment_is_simulated_as_one() -> None:
     """The words after ``( .. )`` move the tool; an unclosed ``(`` hides the rest of its block only."""
     text = "%demo\nG71 G90\nG00 X1 (note) Y2\nG01 F100 X3 (the rest Y9\nG00 Z5\nM30\n"
-    assert _moves(text, "fagor") == [("rapid", 1, 2, 0), ("feed", 3, 2, 0), ("rapid", 3, 2, 5)]
+    assert moves_and_dwells(text, "fagor") == [("rapid", 1, 2, 0), ("feed", 3, 2, 0), ("rapid", 3, 2, 5)]
 
 
 # -- drilling words: hand-derived toolpaths ------------------------------------------------------------
@@ -250,7 +234,7 @@ def test_fagor_g81_absolute_moves_as_derived_by_hand() -> None:
     G98 returns to the initial level 20 (the cycle stayed active, so the initial level is still 20)."""
     program = ("G71 G90 G17\nG00 X0 Y0 Z20\nM03 S800\nG81 G99 X10 Y10 Z2 I-10 K0.5 F200\nX20\n"
                "G98 G81 X30 Y10 Z3 I-4\nG80\nM30\n")
-    assert _moves(program, "fagor") == [
+    assert moves_and_dwells(program, "fagor") == [
         ("rapid", 0.0, 0.0, 20.0),
         ("rapid", 10.0, 10.0, 20.0), ("rapid", 10.0, 10.0, 2.0), ("feed", 10.0, 10.0, -10.0), ("dwell", 0.5),
         ("rapid", 10.0, 10.0, 2.0),
@@ -264,7 +248,7 @@ def test_fagor_g81_absolute_moves_as_derived_by_hand() -> None:
 def test_fagor_g91_reference_plane_from_the_start_and_depth_from_the_plane() -> None:
     """G91 from Z20: Z-18 puts the reference plane at 2, I-12 the bottom at 2 - 12 = -10; X/Y are steps."""
     program = "G71 G90 G17\nG00 X0 Y0 Z20\nM03 S800\nG91 G98 G81 X10 Y5 Z-18 I-12 F100\nX5\nG80\nM30\n"
-    assert _moves(program, "fagor") == [
+    assert moves_and_dwells(program, "fagor") == [
         ("rapid", 0.0, 0.0, 20.0),
         ("rapid", 10.0, 5.0, 20.0), ("rapid", 10.0, 5.0, 2.0), ("feed", 10.0, 5.0, -10.0), ("rapid", 10.0, 5.0, 20.0),
         ("rapid", 15.0, 5.0, 20.0), ("rapid", 15.0, 5.0, 2.0), ("feed", 15.0, 5.0, -10.0), ("rapid", 15.0, 5.0, 20.0),
@@ -273,7 +257,7 @@ def test_fagor_g91_reference_plane_from_the_start_and_depth_from_the_plane() -> 
 
 def test_fagor_g89_dwells_and_feeds_out() -> None:
     program = "G71 G90\nG00 X0 Y0 Z20\nM03 S800\nG99 G89 X5 Y5 Z2 I-6 K1 F50\nG80\nM30\n"
-    assert _moves(program, "fagor")[1:] == [
+    assert moves_and_dwells(program, "fagor")[1:] == [
         ("rapid", 5.0, 5.0, 20.0), ("rapid", 5.0, 5.0, 2.0), ("feed", 5.0, 5.0, -6.0), ("dwell", 1.0),
         ("feed", 5.0, 5.0, 2.0)]
 
@@ -281,7 +265,7 @@ def test_fagor_g89_dwells_and_feeds_out() -> None:
 @pytest.mark.parametrize("setup, k, seconds", [(None, "K0.5", 0.5), (HUNDREDTHS, "K50", 0.5), (HUNDREDTHS, "K5", 0.05)])
 def test_the_dwell_unit_comes_from_the_set_up(setup: MachineSetup | None, k: str, seconds: float) -> None:
     program = f"G71 G90\nG00 X0 Y0 Z20\nM03 S800\nG81 X5 Y5 Z2 I-6 {k} F50\nG04 {k}\nG80\nM30\n"
-    assert [m for m in _moves(program, "fagor", setup) if m[0] == "dwell"] == [("dwell", seconds)] * 2
+    assert [m for m in moves_and_dwells(program, "fagor", setup) if m[0] == "dwell"] == [("dwell", seconds)] * 2
     fanuc = _translate(program, "fagor", "fanuc", setup)
     assert f"G82 X5. Y5. Z-6. R2. P{round(seconds * 1000)} F50." in fanuc
     assert f"G04 X{seconds:g}" in fanuc
@@ -301,7 +285,7 @@ def test_a_cycle_without_dwell_after_one_with_writes_k0() -> None:
     out = _translate(program, "fanuc", "fagor")
     assert out.splitlines()[3:7] == ["G81 X5. Y5. Z2. I-6. K0.5 F50.", "G81 X6. Z2. I-6. K0.", "G89 X7. Z2. I-6. K0.5",
                                     "G89 X8. Z2. I-6. K0."]
-    _verify(program, out, "fanuc", "fagor")
+    assert_verifies_exactly(program, out, "fanuc", "fagor")
 
 
 def test_the_dwell_is_written_again_after_a_machine_coordinate_move() -> None:
@@ -313,7 +297,7 @@ def test_the_dwell_is_written_again_after_a_machine_coordinate_move() -> None:
     out = _translate(program, "fanuc", "fagor")
     assert out.splitlines()[3:7] == ["G81 X5. Y5. Z2. I-6. K1. F50.", "G80", "G53 G00 X0. Y0.",
                                      "G81 X6. Y5. Z2. I-6. K1. F50."]
-    _verify(program, out, "fanuc", "fagor")
+    assert_verifies_exactly(program, out, "fanuc", "fagor")
 
 
 def test_every_cycle_call_after_a_dwell_names_its_k() -> None:
@@ -324,7 +308,7 @@ def test_every_cycle_call_after_a_dwell_names_its_k() -> None:
     out = _translate(program, "fanuc", "fagor")
     assert out.splitlines()[3:8] == ["G81 X4. Y5. Z2. I-6. F50.", "G81 X5. Z2. I-6. K1.", "G89 X6. Z2. I-6. K1.", "G80",
                                      "G81 X7. Y5. Z2. I-6. K0. F50."]
-    _verify(program, out, "fanuc", "fagor")
+    assert_verifies_exactly(program, out, "fanuc", "fagor")
 
 
 def test_a_cycle_call_writes_the_levels_its_source_carried_over() -> None:
@@ -334,7 +318,7 @@ def test_a_cycle_call_writes_the_levels_its_source_carried_over() -> None:
     program = (PRO["fanuc"] + "S800 M03\nG81 X10. Y0 Z-6. R2. F100.\nX20. Z-9.\nG82 X30. P500\nG80\nM30\n")
     out = _translate(program, "fanuc", "fagor")
     assert out.splitlines()[3:6] == ["G81 X10. Y0. Z2. I-6. F100.", "X20. I-9.", "G81 X30. Z2. I-9. K0.5"]
-    _verify(program, out, "fanuc", "fagor")
+    assert_verifies_exactly(program, out, "fanuc", "fagor")
 
 
 def test_a_fanuc_repeat_count_has_no_fagor_word() -> None:
@@ -358,10 +342,10 @@ FANUC_DRILLING = [
 @pytest.mark.parametrize("program", FANUC_DRILLING)
 def test_fanuc_drilling_through_fagor_and_back_verifies_at_zero_deviation(program: str) -> None:
     fagor = _translate(program, "fanuc", "fagor")
-    _verify(program, fagor, "fanuc", "fagor")
+    assert_verifies_exactly(program, fagor, "fanuc", "fagor")
     back = _translate(fagor, "fagor", "fanuc")
-    _verify(fagor, back, "fagor", "fanuc")
-    _verify(program, back, "fanuc", "fanuc")
+    assert_verifies_exactly(fagor, back, "fagor", "fanuc")
+    assert_verifies_exactly(program, back, "fanuc", "fanuc")
     assert _translate(fagor, "fagor", "fagor") == fagor
 
 

@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import io
 import random
-import re
 from typing import Any
 
 import pytest
@@ -19,7 +18,7 @@ from postproc.setup.machine import ToolData
 from postproc.setup.machine_setup import InputSettings, MachineSetup
 from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
-from tests.support.rs274 import available, run_rs274
+from tests.support.rs274 import available, run_rs274, straight_moves_with_length
 
 
 def _lathe(tools: dict[int, tuple[float, float]], wear: dict[int, tuple[float, float]] | None = None) -> MachineSetup:
@@ -74,8 +73,6 @@ def test_the_set_up_refuses_x_without_z() -> None:
 
 TABLE_INCH = {1: (0.0, 0.0), 2: (0.1, 0.2), 3: (-0.05, 0.3), 4: (0.25, -0.15)}
 """rs274's table: X (a radius) and Z in inches, exact in its 4 printed decimals of mm."""
-_MOVE = re.compile(r"(STRAIGHT_TRAVERSE|STRAIGHT_FEED)\(([^)]*)\)")
-_OFFSET = re.compile(r"USE_TOOL_LENGTH_OFFSET\(\s*([-\d.]+)\s+([-\d.]+)\s+([-\d.]+)")
 
 
 def _linuxcnc_setup() -> MachineSetup:
@@ -86,20 +83,12 @@ def _linuxcnc_setup() -> MachineSetup:
 def _rs274(text: str) -> list[tuple[float, float, float, float]]:
     """rs274's moves as (X diameter, Z, controlled X diameter, controlled Z), mm."""
     table = "".join(f"T{n} P{n} X{x} Z{z} D0\n" for n, (x, z) in TABLE_INCH.items())
-    ox = oz = 0.0
     out: list[tuple[float, float, float, float]] = []
-    for call in run_rs274(text, tool_table=table):
-        offset = _OFFSET.search(call)
-        if offset:
-            ox, oz = float(offset.group(1)), float(offset.group(3))
-            continue
-        move = _MOVE.search(call)
-        if move:
-            x, _, z = (float(v) for v in move.group(2).split(",")[:3])
-            point = (round(2 * x, 4), z, round(2 * (x + ox), 4), round(z + oz, 4))
-            if out and (out[-1][2], out[-1][3]) == point[2:]:
-                continue  # the machine does not move
-            out.append(point)
+    for x, _, z, ox, oz in straight_moves_with_length(run_rs274(text, tool_table=table)):
+        point = (round(2 * x, 4), z, round(2 * (x + ox), 4), round(z + oz, 4))
+        if out and (out[-1][2], out[-1][3]) == point[2:]:
+            continue  # the machine does not move
+        out.append(point)
     return out
 
 

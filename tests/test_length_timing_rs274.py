@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import io
 import random
-import re
 from typing import Any
 
 import pytest
@@ -18,14 +17,12 @@ from postproc.api import translate
 from postproc.setup.machine import ToolData
 from postproc.setup.machine_setup import MachineSetup
 from postproc.simulate.toolpath import toolpath_events
-from tests.support.rs274 import available, run_rs274
+from tests.support.rs274 import available, run_rs274, straight_moves_with_length
 
 pytestmark = pytest.mark.skipif(not available(), reason="the LinuxCNC interpreter rs274 is not installed")
 
 PROGRAMS = 100
 LENGTHS_INCH = {1: 1.0, 2: 0.25, 3: 2.5, 4: 0.0}
-_MOVE = re.compile(r"(STRAIGHT_TRAVERSE|STRAIGHT_FEED)\(([^)]*)\)")
-_OFFSET = re.compile(r"USE_TOOL_LENGTH_OFFSET\(\s*([-\d.]+)\s+([-\d.]+)\s+([-\d.]+)")
 
 
 def _program(rng: random.Random) -> str:
@@ -54,20 +51,12 @@ def _program(rng: random.Random) -> str:
 def _rs274_moves(text: str) -> list[tuple[float, float, float, float]]:
     """rs274's moves: programmed X, Y, Z and the controlled Z (programmed + the length in force), mm."""
     table = "".join(f"T{n} P{n} Z{v} D0.1\n" for n, v in LENGTHS_INCH.items())
-    length = 0.0
-    out = []
-    for call in run_rs274(text, tool_table=table):
-        offset = _OFFSET.search(call)
-        if offset:
-            length = float(offset.group(3))
-            continue
-        move = _MOVE.search(call)
-        if move:
-            x, y, z = (float(v) for v in move.group(2).split(",")[:3])
-            point = (x, y, z, round(z + length, 4))
-            if out and (out[-1][0], out[-1][1], out[-1][3]) == (x, y, point[3]):
-                continue  # the machine does not move (rs274 prints it; a toolpath leaves it out)
-            out.append(point)
+    out: list[tuple[float, float, float, float]] = []
+    for x, y, z, _, length in straight_moves_with_length(run_rs274(text, tool_table=table)):
+        point = (x, y, z, round(z + length, 4))
+        if out and (out[-1][0], out[-1][1], out[-1][3]) == (x, y, point[3]):
+            continue  # the machine does not move (rs274 prints it; a toolpath leaves it out)
+        out.append(point)
     return out
 
 

@@ -13,6 +13,7 @@ import pytest
 from postproc.api import read_program, translate
 from postproc.errors import ConfigError, Diagnostics, ErrorList, ErrorLevel
 from postproc.ir import MachineFunction
+from postproc.rs274.machine_codes import dwell_in_seconds
 from postproc.setup.machine_setup import ControllerSettings, MachineCode, MachineSetup, load_setup
 from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
@@ -203,7 +204,7 @@ def test_controller_and_machine_codes_round_trip_through_xml(tmp_path: Path, cli
     path = tmp_path / "m.xml"
     path.write_text(text)
     setup = load_setup(path)
-    assert setup.controller.variant == "haas" and setup.controller.dwell_seconds_rule() is False
+    assert setup.controller.variant == "haas" and dwell_in_seconds(setup.controller) is False
     assert [c.key() for c in setup.machine_codes] == [("M", "60"), ("G", "120.1")]
     result = cli("config", "dump", path)
     assert (result.status, result.out.decode()) == (0, text)

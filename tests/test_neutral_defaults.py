@@ -10,6 +10,7 @@ from postproc.cycles.drilling import DrillingExpansion
 from postproc.cycles.section import CannedCycle
 from postproc.errors import ConfigError
 from postproc.interp.evaluation import MappingEnv
+from postproc.rs274.machine_codes import cutter_register_from_h, dwell_in_seconds
 from postproc.setup.machine_setup import MachineSetup
 from postproc.xmlio import lxml_etree
 
@@ -71,7 +72,7 @@ def test_a_mapping_environment_names_its_vacancy_rule() -> None:
 def test_a_set_up_without_a_variant_is_the_dialects_own_controller() -> None:
     controller = MachineSetup().controller
     assert controller.variant is None
-    assert controller.dwell_seconds_rule() is False and controller.cutter_h_rule() is False
+    assert not dwell_in_seconds(controller) and not cutter_register_from_h(controller)
 
 
 def test_the_core_holds_no_controllers_cutter_rules() -> None:

@@ -20,8 +20,8 @@ from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList
 from postproc.ir.expr import Binary, Expr, Func, Num, Unary, Var
 from postproc.setup.machine_setup import MachineSetup, load_setup
-from postproc.simulate.toolpath import toolpath_events
-from postproc.simulate.verify import verify_lines
+
+from tests.support.paths import assert_verifies_exactly, moves_and_dwells
 
 from dialects.siemens.expressions import FUNCTIONS, R_BASE, parse_expr, spell_expr
 
@@ -48,20 +48,7 @@ def _errors(text: str, source: str, target: str, setup: MachineSetup | None = No
 
 
 def _moves(text: str, dialect: str = "siemens", setup: MachineSetup | None = None) -> list[tuple[object, ...]]:
-    """(move, x, y, z) of each motion and ("dwell", seconds) of each dwell."""
-    out: list[tuple[object, ...]] = []
-    for e in toolpath_events(io.StringIO(text), file="in.mpf", dialect=dialect, setup=setup):
-        if "move" in e:
-            out.append((e["move"], e["x"], e["y"], e["z"]))
-        elif e.get("event") == "dwell":
-            out.append(("dwell", e["seconds"]))
-    return out
-
-
-def _verify(a: str, b: str, source: str, target: str, setup: MachineSetup | None = None) -> None:
-    report = verify_lines(io.StringIO(a), io.StringIO(b), file_in="a", file_out="b", source=source,
-                          target=target, setup=setup, target_setup=setup, tolerance=0.0)
-    assert report.ok, report.summary() + "\n--- a\n" + a + "--- b\n" + b
+    return moves_and_dwells(text, dialect, setup, file="in.mpf")
 
 
 # -- lossless ------------------------------------------------------------------------------------------
@@ -249,7 +236,7 @@ def test_d_selects_the_tool_data_and_fanuc_g43_h_becomes_d() -> None:
     fanuc = "G21 G90 G0 X0 Y0\nT2 M6\nG43 H2 Z5.\nG1 Z0 F100.\nM30\n"
     out = _translate(fanuc, "fanuc", "siemens", setup)
     assert out.splitlines()[2].startswith("D02 ")
-    _verify(fanuc, out, "fanuc", "siemens", setup)
+    assert_verifies_exactly(fanuc, out, "fanuc", "siemens", setup)
 
 
 def test_a_name_as_a_tool_and_the_cycles_are_kept_verbatim() -> None:
@@ -318,7 +305,7 @@ def test_an_unset_r_parameter_is_an_error_not_zero() -> None:
 def test_the_pocket_example_translates_with_zero_deviation(target: str) -> None:
     path = ROOT / "examples" / "siemens" / "pocket_loops.mpf"
     text = path.read_text(encoding="utf-8")
-    _verify(text, _translate(text, "siemens", target, _setup()), "siemens", target, _setup())
+    assert_verifies_exactly(text, _translate(text, "siemens", target, _setup()), "siemens", target, _setup())
 
 
 FANUC_DRILLING = """%
@@ -345,9 +332,9 @@ def test_a_fanuc_program_with_cycles_reads_back_from_siemens_to_the_same_toolpat
     out = _translate(FANUC_DRILLING, "fanuc", "siemens", setup)
     assert out.startswith(";%\n%_N_PROG1001_MPF\n")  # the tape mark as a trace
     assert "G4 F0.5" in out
-    _verify(FANUC_DRILLING, out, "fanuc", "siemens", setup)
+    assert_verifies_exactly(FANUC_DRILLING, out, "fanuc", "siemens", setup)
     again = _translate(out, "siemens", "linuxcnc", setup)
-    _verify(out, again, "siemens", "linuxcnc", setup)
+    assert_verifies_exactly(out, again, "siemens", "linuxcnc", setup)
 
 
 # -- subprograms ---------------------------------------------------------------------------------------
@@ -366,7 +353,7 @@ def test_a_subprogram_call_with_repetitions_runs_the_spf_file(tmp_path: Path) ->
     assert _moves(text, setup=setup) == [("feed", 10, 0, 0), ("feed", 20, 0, 0), ("feed", 30, 0, 0),
                                          ("rapid", 30, 0, -1), ("rapid", 30, 0, 2), ("rapid", 3, 0, 2)]
     assert _translate(text, "siemens", "siemens", setup) == text
-    _verify(text, _translate(text, "siemens", "linuxcnc", setup), "siemens", "linuxcnc", setup)
+    assert_verifies_exactly(text, _translate(text, "siemens", "linuxcnc", setup), "siemens", "linuxcnc", setup)
 
 
 def test_subprogram_ends_and_parameters_that_are_not_modelled(tmp_path: Path) -> None:
@@ -392,7 +379,7 @@ def test_trans_replaces_the_programmable_offset_and_trans_alone_clears_it() -> N
 
 @pytest.mark.parametrize("target", ["fanuc", "linuxcnc", "grbl"])
 def test_trans_is_evaluated_for_other_controls(target: str) -> None:
-    _verify(TRANS_PROGRAM, _translate(TRANS_PROGRAM, "siemens", target), "siemens", target)
+    assert_verifies_exactly(TRANS_PROGRAM, _translate(TRANS_PROGRAM, "siemens", target), "siemens", target)
 
 
 def test_unmodelled_and_computed_frames_are_kept_verbatim() -> None:
@@ -452,7 +439,7 @@ def test_mcall_cycles_are_fanuc_cycles_natively_and_expanded_elsewhere() -> None
     assert "G98 G81 Z-5. R2. K0\nX10. Y10.\nX20.\nG80\n" in out
     assert "G99 G82 Z-3. R5. P500 K0\nX30.\nG80\n" in out
     for target in ("fanuc", "linuxcnc", "grbl"):
-        _verify(CYCLES, _translate(CYCLES, "siemens", target), "siemens", target)
+        assert_verifies_exactly(CYCLES, _translate(CYCLES, "siemens", target), "siemens", target)
     assert _translate(CYCLES, "siemens", "siemens") == CYCLES
 
 

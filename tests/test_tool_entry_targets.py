@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import io
 import random
-import re
 from typing import Any
 
 import pytest
@@ -18,7 +17,7 @@ from postproc.errors import Diagnostics, ErrorLevel, ErrorList
 from postproc.setup.machine import ToolData
 from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
-from tests.support.rs274 import available, run_rs274
+from tests.support.rs274 import available, run_rs274, straight_moves_with_length
 from tests.support.tools import with_tools
 
 SETUP = with_tools(lengths={1: 50.8, 2: 63.5}, radii={1: 3.81, 2: 5.08})
@@ -26,8 +25,6 @@ SETUP = with_tools(lengths={1: 50.8, 2: 63.5}, radii={1: 3.81, 2: 5.08})
 RS274_TABLE = "T1 P1 Z2 D0.3\nT2 P2 Z2.5 D0.4\n"
 """The same registers as rs274 reads them (inches, diameters)."""
 TARGETS = ("fanuc", "grbl", "grblhal")
-_MOVE = re.compile(r"(STRAIGHT_TRAVERSE|STRAIGHT_FEED)\(([^)]*)\)")
-_OFFSET = re.compile(r"USE_TOOL_LENGTH_OFFSET\(\s*([-\d.]+)\s+([-\d.]+)\s+([-\d.]+)")
 
 
 def _lines(text: str) -> list[str]:
@@ -103,19 +100,11 @@ def _program(rng: random.Random) -> str:
 
 def _rs274_points(text: str) -> list[tuple[float, float, float]]:
     """rs274's controlled points: its canonical X and Y (compensated), Z plus the length in force, mm."""
-    length = 0.0
     out: list[tuple[float, float, float]] = []
-    for call in run_rs274(text, tool_table=RS274_TABLE):
-        offset = _OFFSET.search(call)
-        if offset:
-            length = float(offset.group(3))
-            continue
-        move = _MOVE.search(call)
-        if move:
-            x, y, z = (float(v) for v in move.group(2).split(",")[:3])
-            point = (round(x, 3), round(y, 3), round(z + length, 3))
-            if not out or out[-1] != point:
-                out.append(point)
+    for x, y, z, _, length in straight_moves_with_length(run_rs274(text, tool_table=RS274_TABLE)):
+        point = (round(x, 3), round(y, 3), round(z + length, 3))
+        if not out or out[-1] != point:
+            out.append(point)
     return out
 
 

@@ -31,7 +31,7 @@ from postproc.dialect import Reader
 from postproc.errors import Location, ParseError, PostprocError
 from postproc.ir import Block, Comments, NativeCode, ProgramStart, Sequence
 from postproc.isg_family.expressions import Unmodelled
-from postproc.isg_family.lexer import Grammar, Lexed, lex, strip_comments
+from postproc.isg_family.lexer import Grammar, Lexed, command_words, lex, strip_comments
 from postproc.isg_family.statements import Nesting, parse_statement
 from postproc.isg_family.zero_offsets import ZeroOffsets
 from postproc.rs274.lexer import split_lines
@@ -89,7 +89,7 @@ class _State:
     def block(self, number: int, text: str, eol: str) -> Block:
         block = Block(number, text, eol)
         if self.in_comment is not None:
-            if _words(text) == ["#COMMENT", "END"]:
+            if command_words(text) == ["#COMMENT", "END"]:
                 self.in_comment = None
             block.add(Comments([text]))
             return block
@@ -149,7 +149,7 @@ class _State:
         return block
 
     def command(self, block: Block, code: str, pos: int) -> Block:
-        words = _words(code[pos:])
+        words = command_words(code[pos:])
         if words[:2] == ["#COMMENT", "BEGIN"]:
             self.in_comment = block.line
             block.sections.clear()
@@ -165,11 +165,3 @@ class _State:
             errors.append(ParseError("#COMMENT BEGIN is never ended (#COMMENT END missing)",
                                      Location(self.file, self.in_comment, 1)))
         return errors
-
-
-def _words(code: str) -> list[str]:
-    """Upper-case words of a command line, without its block number."""
-    words = code.upper().split()
-    if words and words[0][:1] == "N" and words[0][1:].isdigit():
-        words = words[1:]
-    return words

@@ -40,7 +40,7 @@ from .commands import command_name, describe_command
 from .rotation import rotation_command
 from .declarations import IsgTypes, parse_declaration, stored
 from postproc.isg_family.expressions import Unmodelled
-from postproc.isg_family.lexer import Lexed, lex, strip_comments
+from postproc.isg_family.lexer import Lexed, command_words, lex, strip_comments
 from postproc.isg_family.statements import Nesting, parse_statement
 from postproc.isg_family.zero_offsets import ZeroOffsets
 
@@ -126,7 +126,7 @@ class _State:
     def block(self, number: int, text: str, code: str, eol: str) -> Block:
         block = Block(number, text, eol)
         if self.in_comment:
-            if _words(code) == ["#COMMENT", "END"]:  # alone in its block (a block number may precede it)
+            if command_words(code) == ["#COMMENT", "END"]:  # alone in its block (a block number may precede it)
                 self.in_comment = False
             block.add(Comments([text]))
             return block
@@ -254,7 +254,7 @@ class _State:
         block.add(ProgramStart(int(name), None) if name.isdigit() else ProgramStart(None, name))
 
     def command(self, block: Block, code: str, pos: int) -> None:
-        words = _words(code[pos:])
+        words = command_words(code[pos:])
         if words[:2] == ["#COMMENT", "BEGIN"]:
             self.in_comment = True
             block.add(Comments([block.text or ""]))
@@ -321,12 +321,3 @@ class _State:
         if self.in_var is not None:
             errors.append(self.error(self.in_var, 1, "#VAR is never ended (#ENDVAR missing)"))
         return errors
-
-
-def _words(code: str) -> list[str]:
-    """Upper-case words of a command line, without its block number."""
-    words = code.upper().split()
-    if words and words[0][:1] == "N" and words[0][1:].isdigit():
-        words = words[1:]
-    return words
-

@@ -73,6 +73,15 @@ class Lexed:
     """``("LL"|"L", name, offset)``."""
 
 
+def command_words(code: str) -> list[str]:
+    """Upper-case words of a command line (``#COMMENT END``, ``$IF ...``), without its block number: both
+    readers of the family compare a command by them."""
+    words = code.upper().split()
+    if words and words[0][:1] == "N" and words[0][1:].isdigit():
+        words = words[1:]
+    return words
+
+
 def strip_comments(file: str, line: int, text: str, lexed: Lexed, parens: bool = True) -> str:
     """Blank out ``( .. )`` (nesting; an unclosed one runs to the end; only when ``parens``) and ``;``
     to the end; keep their texts in ``lexed.comments``. A ``"..."`` string (``#MSG ["done :)"]``) is

@@ -159,9 +159,7 @@ class SelectToolData(LoweringStep):
     def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
         if ctx.dialect == target.NAME:
             return None
-        from ..plugins import default_registry
-        source = default_registry().dialects.get(ctx.dialect)
-        shifts = source is not None and source.LENGTH_AT_PROGRAMMED_AXIS
+        shifts = ctx.length_at_axis  # the reading dialect's LENGTH_AT_PROGRAMMED_AXIS (``Dialect.context``)
         return _Select(ctx, target.LENGTH_TOGGLES, shifts and not target.LENGTH_AT_PROGRAMMED_AXIS if shifts
                        else None)
 

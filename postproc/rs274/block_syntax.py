@@ -32,7 +32,7 @@ from .frame_words import read_frame
 from postproc.syntaxes.syntax import Syntax
 
 from .codes import CodeTable, g_key
-from .machine_codes import Defaults, machine_table
+from .machine_codes import Defaults, cutter_register_from_h, dwell_in_seconds, machine_table
 from .point_mix import point_mix
 from .data_setting import read_data_setting
 from .length_words import LENGTH_REGISTER, bare_length, dynamic_length, length_register
@@ -186,7 +186,7 @@ class WordBlockSyntax(Syntax):
                         mix.saw_bare(ctx, block, up, num, value, units)
                 else:
                     values[up] = float(int(num))
-            elif up == "P" and "." in num and ctx.setup.controller.dwell_seconds_rule():
+            elif up == "P" and "." in num and dwell_in_seconds(ctx.setup.controller):
                 values[up] = milliseconds(block, ctx, num)
             elif up in INTEGER_LETTERS or up == "K":
                 if "." in num:
@@ -351,7 +351,7 @@ class WordBlockSyntax(Syntax):
                     used.add("D")
                     register = values["D"]
                 elif arg != "off" and "H" in values and "08" not in codes:
-                    if not ctx.setup.controller.cutter_h_rule():
+                    if not cutter_register_from_h(ctx.setup.controller):
                         h = self._word_text(block, "H")
                         raise ProgramError(f"G{num} takes its radius register from D, not H{h}{CUTTER_H_HINT}",
                                            ctx.at(block, ctx.column_of(block, "H")))

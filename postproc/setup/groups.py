@@ -320,12 +320,6 @@ class ControllerSettings(SetupGroup):
         numbers = tuple(int(part) for part in self.version.split("."))
         return numbers if len(numbers) == 3 else numbers + (0,)
 
-    def dwell_seconds_rule(self) -> bool:
-        return self.variant == "haas" if self.dwell_seconds is None else self.dwell_seconds
-
-    def cutter_h_rule(self) -> bool:
-        return self.variant == "fanuc-0m" if self.cutter_register_h is None else self.cutter_register_h
-
 
 CodeAction = Literal["none", "stop", "optional-stop", "spindle-cw", "spindle-ccw", "spindle-stop",
                      "coolant-on", "coolant-off", "gear", "tool-change", "rigid-tap", "thread-chamfer-on",

@@ -36,7 +36,7 @@ import shutil
 import subprocess
 import tempfile
 from pathlib import Path
-from typing import Any, Iterable
+from typing import Any, Iterable, Iterator
 
 __all__ = [
     "RS274",
@@ -338,3 +338,20 @@ def assert_same_moves(ours: list[dict[str, Any]], theirs: list[dict[str, Any]], 
     for n, (a, b) in enumerate(zip(ours, theirs)):
         assert a["move"] == b["move"], (n, a, b, *context)
         assert max(abs(float(a[k]) - float(b[k])) for k in "xyz") <= tolerance, (n, a, b, *context)
+
+
+_STRAIGHT = re.compile(r"(STRAIGHT_TRAVERSE|STRAIGHT_FEED)\(([^)]*)\)")
+_LENGTH_OFFSET = re.compile(r"USE_TOOL_LENGTH_OFFSET\(\s*([-\d.]+)\s+([-\d.]+)\s+([-\d.]+)")
+
+
+def straight_moves_with_length(calls: Iterable[str]) -> Iterator[tuple[float, float, float, float, float]]:
+    """(X, Y, Z, length offset X, length offset Z) of each straight move rs274 printed (its canonical calls, in
+    its units): the programmed end and the offset of the last ``USE_TOOL_LENGTH_OFFSET`` before it (zero before
+    one), so a test adds the two for the controlled point it compares."""
+    ox = oz = 0.0
+    for call in calls:
+        if offset := _LENGTH_OFFSET.search(call):
+            ox, oz = float(offset.group(1)), float(offset.group(3))
+        elif move := _STRAIGHT.search(call):
+            x, y, z = (float(v) for v in move.group(2).split(",")[:3])
+            yield x, y, z, ox, oz
