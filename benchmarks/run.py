@@ -31,7 +31,8 @@ import batch  # noqa: E402
 import generate  # noqa: E402
 import workloads  # noqa: E402
 from peers import PARSERS, PARTIAL, fanuc_decimals_copy  # noqa: E402
-from summary import Line, Target, at_least_x, print_summary  # noqa: E402
+from summary import (FLAT_TARGET, PLAIN_TARGET, RSS_TARGET_MB, TOOLPATH_TARGET, VERIFY_TARGET, Line,  # noqa: E402
+                     Target, at_least_x, print_summary)
 from timing import Runs, paired_ratio, rate, rounds  # noqa: E402
 from translations import TRANSLATIONS  # noqa: E402
 from workloads import PLAIN, PY, at_least_lines, cached, prepare, translate  # noqa: E402
@@ -39,14 +40,6 @@ from workloads import PLAIN, PY, at_least_lines, cached, prepare, translate  # n
 PEERS = [PY, str(HERE / "peers.py")]
 MACHINE = HERE / "machine.xml"
 """The tools of the generated programs (their G43 H01-H03): toolpath and verify simulate the lengths."""
-RSS_TARGET_MB = 64.0
-FLAT_TARGET = 1.10
-"""Peak RSS at the largest size over the smallest: "flat" allows 10 % for ten times the blocks."""
-PLAIN_TARGET = 0.8
-TOOLPATH_TARGET = 1.5
-"""toolpath: at least 1.5x gcode-lib's parse plus state tracking (issue 30)."""
-VERIFY_TARGET = 1.0
-"""verify: at least gcode-lib's parse plus state tracking over both files (issue 30)."""
 ROWS: dict[str, tuple[str, ...]] = {
     **{row: (t.label, "gcode-lib") + (("plain loop",) if row == "normalize" else ()) for row, t in TRANSLATIONS.items()},
     "toolpath": ("toolpath --format jsonl", "gcode-lib-state"),
