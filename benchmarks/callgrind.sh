@@ -12,8 +12,9 @@
 #   (benchmarks/peers.py TOOL: gcode-lib, gcode-lib-state, gcodeparser, pygcode), peer:TOOL+DIALECT (over the
 #   program and its translation: verify's baseline), plainloop (benchmarks/plainloop.py).
 # --program cycles: per hole, the drilling rows (generate.py --kind cycles) of CALLGRIND_SMALL and
-#   CALLGRIND_LARGE thousand holes (default 10 and 20); TGT a dialect (expanded), or plainloop:DIALECT (the
-#   plain loop over that translation, prepared unmeasured: the row's baseline in make bench).
+#   CALLGRIND_LARGE hundred holes (default 100 and 200; a hole costs about four CAM blocks); TGT a dialect
+#   (expanded), or plainloop:DIALECT (the plain loop over that translation, prepared unmeasured: the row's
+#   baseline in make bench).
 # --program macro: per interpreted block (generate.bolt_circle_executed), the nested-WHILE bolt circles of
 #   CALLGRIND_SMALL and CALLGRIND_LARGE hundred holes (about 700 interpreted blocks a hundred; default 10 and
 #   20); TGT a dialect (flattened) or plainloop:DIALECT.
@@ -28,10 +29,10 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 program=cam
 if [ "${1:-}" = "--program" ]; then program=$2; shift 2; fi
-src=$1 tgt=$2 norm=$3 label=${4:-$1-$2-$3}
+src=$1 tgt=$2 norm=$3 label=${4:-$1-$2-$3} files=()
 case $program in
   cam) small=${CALLGRIND_SMALL:-20} large=${CALLGRIND_LARGE:-40} unit=block ;;
-  cycles) small=${CALLGRIND_SMALL:-10} large=${CALLGRIND_LARGE:-20} unit=hole label=cycles-$label ;;
+  cycles) small=${CALLGRIND_SMALL:-100} large=${CALLGRIND_LARGE:-200} unit=hole label=cycles-$label ;;
   macro) small=${CALLGRIND_SMALL:-10} large=${CALLGRIND_LARGE:-20} unit=block label=macro-$label ;;
   startup) unit=start label=startup-$label ;;
   *) echo "unknown program $program (cam, cycles, macro or startup)" >&2; exit 2 ;;
@@ -67,9 +68,12 @@ if [ "$program" = startup ]; then
   exit 0
 fi
 
-prefix=b scale=000; [ "$program" = cam ] || prefix=$program; [ "$program" = macro ] && scale=00
+# The programs: b5.nc is 5,000 CAM blocks; cycles500.nc 500 holes, macro500.nc 500 holes.
+scale=000; [ "$program" = cam ] || scale=00
 for n in $small $large; do
-  [ -f "$work/$prefix$n.nc" ] || .venv/bin/python benchmarks/generate.py $n$scale "$work/$prefix$n.nc" --kind "$program"
+  file=$work/b$n.nc; [ "$program" = cam ] || file=$work/$program$n$scale.nc
+  [ -f "$file" ] || .venv/bin/python benchmarks/generate.py $n$scale "$file" --kind "$program"
+  files+=("$file")
 done
 # Units of the difference: blocks, holes, or the interpreted blocks of the macro program.
 units=$(( $large$scale - $small$scale ))
@@ -80,18 +84,15 @@ def executed(holes): return generate.bolt_circle_executed(-(-holes // generate.M
 print(executed($large$scale) - executed($small$scale))")
 fi
 # What the row reads besides the program (a translation, gcodeparser's copy), made unmeasured.
-for n in $small $large; do
-  PREPARE=1 .venv/bin/python benchmarks/callgrind_once.py "$src" "$tgt" "$norm" "$work/$prefix$n.nc" >/dev/null
+for file in "${files[@]}"; do
+  PREPARE=1 .venv/bin/python benchmarks/callgrind_once.py "$src" "$tgt" "$norm" "$file" >/dev/null
 done
 # One run first, unmeasured: after an install the first run discovers the entry points (and caches them,
 # postproc.entry_points) and writes byte code; measured, that lands in one of the two runs only and was
 # most of the +-4-7k noise of the per-block figure.
 sleep 2.5  # the entry-point cache trusts an installation at least postproc.entry_points.SETTLE seconds old
-.venv/bin/python benchmarks/callgrind_once.py "$src" "$tgt" "$norm" "$work/${prefix}$small.nc" >/dev/null 2>&1 \
-  || { echo "callgrind.sh: the unmeasured run failed: callgrind_once.py $src $tgt $norm $work/${prefix}$small.nc" >&2; exit 1; }
-for n in $small $large; do
-  measure "$work/$label.$n" .venv/bin/python benchmarks/callgrind_once.py "$src" "$tgt" "$norm" "$work/$prefix$n.nc" \
-    > "$work/$label.$n.txt"
-done
-a=$(cat "$work/$label.$small.txt"); b=$(cat "$work/$label.$large.txt")
+.venv/bin/python benchmarks/callgrind_once.py "$src" "$tgt" "$norm" "${files[0]}" >/dev/null 2>&1 \
+  || { echo "callgrind.sh: the unmeasured run failed: callgrind_once.py $src $tgt $norm ${files[0]}" >&2; exit 1; }
+a=$(measure "$work/$label.$small$scale" .venv/bin/python benchmarks/callgrind_once.py "$src" "$tgt" "$norm" "${files[0]}")
+b=$(measure "$work/$label.$large$scale" .venv/bin/python benchmarks/callgrind_once.py "$src" "$tgt" "$norm" "${files[1]}")
 echo "$label $(( (b - a) / units )) instr/$unit ($version)"

@@ -153,7 +153,7 @@ def main() -> None:
                              text=True).stdout.strip()
     small, large = os.environ.get("CALLGRIND_SMALL", "default"), os.environ.get("CALLGRIND_LARGE", "default")
     print(f"callgrind instructions ({version}); CALLGRIND_SMALL={small} CALLGRIND_LARGE={large} (thousand "
-          "blocks, thousand holes of cycles, hundred holes of the macro program): a unit's instructions are the "
+          "blocks, hundred holes of the cycles and macro programs): a unit's instructions are the "
           "large run's minus the small run's over the units between them; a start's are the whole process's")
     head = (f"{'row':<40} {'instr':>18} {'baseline':<42} {'its instr':>18} {'x':>6} {'target':<14} {'':<4}")
     print(head)

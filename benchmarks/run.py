@@ -4,7 +4,7 @@ targets of issue 30 marked PASS/MISS.
 Usage: python benchmarks/run.py [--quick] [--rows ROW ...] [--sizes N ...] [--runs R] [--holes H]
                                 [--macro-holes H] [--cache DIR] [--pygcode-max N] [--batch full|quick|tiny|skip]
 
-Rows: translate fanuc->fanuc/grbl/linuxcnc/isg/fagor (every lowering target, the lossless copy and --normalize) against gcode-lib's parse and a plain streaming
+Rows: translate fanuc->fanuc/grbl/grblhal/linuxcnc/isg/fagor (every lowering target, the lossless copy and --normalize) against gcode-lib's parse and a plain streaming
 loop, toolpath and verify against gcode-lib's position tracking, peak memory and its growth with program
 length (at each of --sizes); canned-cycle holes/s and a parametric loop's interpreted blocks/s against the plain loop over
 their output; start-up against a bare interpreter; batch files/s (benchmarks/batch.py). Every measured
