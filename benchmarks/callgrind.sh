@@ -95,4 +95,10 @@ sleep 2.5  # the entry-point cache trusts an installation at least postproc.entr
   || { echo "callgrind.sh: the unmeasured run failed: callgrind_once.py $src $tgt $norm ${files[0]}" >&2; exit 1; }
 a=$(measure "$work/$label.$small$scale" .venv/bin/python benchmarks/callgrind_once.py "$src" "$tgt" "$norm" "${files[0]}")
 b=$(measure "$work/$label.$large$scale" .venv/bin/python benchmarks/callgrind_once.py "$src" "$tgt" "$norm" "${files[1]}")
-echo "$label $(( (b - a) / units )) instr/$unit ($version)"
+# The fixed cost the two runs imply (start-up, imports, the file's header): a figure far from the row's
+# usual start-up means something ran in one run only (an entry-point discovery, byte code written).
+small_units=$(( units * small / (large - small) )); [ "$program" = macro ] && small_units=$(.venv/bin/python -c "
+import sys; sys.path.insert(0, 'benchmarks'); import generate
+print(generate.bolt_circle_executed(-(-$small$scale // generate.MACRO_HOLES), generate.MACRO_HOLES))")
+per=$(( (b - a) / units ))
+echo "$label $per instr/$unit ($version); runs $a $b, fixed $(( (a - per * small_units) / 1000000 )) M"

@@ -119,8 +119,9 @@ def cost(m: Measure) -> tuple[int, str]:
     return (5 if m.tgt.startswith("verify:") else rank, m.tgt)
 
 
-def measure(m: Measure, store: Path, reuse: bool) -> int | None:
-    """Instructions a unit of one measure (None: it failed, said on stderr), from ``callgrind.sh``."""
+def measure(m: Measure, store: Path, reuse: bool) -> tuple[int | None, str]:
+    """Instructions a unit of one measure (None: it failed, said on stderr) and the fixed cost its two runs
+    imply ("": a start, or not printed), from ``callgrind.sh``."""
     sizes = f"{os.environ.get('CALLGRIND_SMALL', '-')}-{os.environ.get('CALLGRIND_LARGE', '-')}"
     kept = store / f"{m.key}.{sizes}{'.pure' if os.environ.get('POSTPROC_PURE') == '1' else ''}.txt"
     if not (reuse and kept.exists()):
@@ -129,12 +130,12 @@ def measure(m: Measure, store: Path, reuse: bool) -> int | None:
                                m.normalize], capture_output=True, text=True)
         if done.returncode != 0:
             print(f"callgrind.sh {m.program} {m.tgt}: failed\n{done.stderr}", file=sys.stderr)
-            return None
+            return None, ""
         kept.write_text(done.stdout.strip().splitlines()[-1] + "\n")
     line = kept.read_text()
     print(f"  {line.strip()}", file=sys.stderr)
-    found = re.search(r" (-?\d+) instr/", line)
-    return int(found.group(1)) if found else None
+    found, fixed = re.search(r" (-?\d+) instr/", line), re.search(r"fixed (-?\d+) M", line)
+    return (int(found.group(1)) if found else None), (f"{fixed.group(1)} M" if fixed else "")
 
 
 def main() -> None:
@@ -147,15 +148,17 @@ def main() -> None:
     store = Path(os.environ.get("TMPDIR", "/tmp")) / "postproc-callgrind" / "summary"
     store.mkdir(parents=True, exist_ok=True)
     figures: dict[Measure, int | None] = {}
+    fixed: dict[Measure, str] = {}
     for m in sorted({m for row in rows for m in (row.ours, row.baseline)}, key=cost):
-        figures[m] = measure(m, store, args.reuse)  # one at a time: each run is a niced valgrind process
+        figures[m], fixed[m] = measure(m, store, args.reuse)  # one at a time: each a niced valgrind process
     version = subprocess.run([str(HERE.parent / ".venv" / "bin" / "postproc"), "--version"], capture_output=True,
                              text=True).stdout.strip()
     small, large = os.environ.get("CALLGRIND_SMALL", "default"), os.environ.get("CALLGRIND_LARGE", "default")
     print(f"callgrind instructions ({version}); CALLGRIND_SMALL={small} CALLGRIND_LARGE={large} (thousand "
           "blocks, hundred holes of the cycles and macro programs): a unit's instructions are the "
           "large run's minus the small run's over the units between them; a start's are the whole process's")
-    head = (f"{'row':<40} {'instr':>18} {'baseline':<42} {'its instr':>18} {'x':>6} {'target':<14} {'':<4}")
+    head = (f"{'row':<40} {'instr':>18} {'baseline':<42} {'its instr':>18} {'x':>6} {'target':<14} {'':<4}  "
+            "fixed cost (row / baseline)")
     print(head)
     print("-" * len(head))
     verdicts = []
@@ -166,9 +169,12 @@ def main() -> None:
             verdicts.append(verdict)
         print(f"{row.what:<40} {fmt(ours, ',d'):>12}/{row.unit:<5} {row.baseline_label:<42} "
               f"{fmt(base, ',d'):>12}/{row.unit:<5} {fmt(ratio, '.2f'):>6} "
-              f"{row.target.text if row.target else '-':<14} {verdict:<4}")
+              f"{row.target.text if row.target else '-':<14} {verdict:<4}  "
+              f"{fixed[row.ours] or '-'} / {fixed[row.baseline] or '-'}")
     print(f"targets: {verdicts.count('PASS')} PASS, {verdicts.count('MISS')} MISS, {verdicts.count('n/a')} not "
           "judged in instructions (a wall-clock target) or not measured")
+    print("fixed cost: the small run's instructions less its units at the row's figure (start-up, imports); "
+          "one far from its neighbours' means a run did something once that the other did not")
 
 
 if __name__ == "__main__":
