@@ -78,7 +78,7 @@ bench: compile
 	$(BIN)/python benchmarks/run.py $(BENCH_ARGS)
 
 # The same rows in instructions (valgrind's callgrind, one row at a time, niced; docs/benchmarks.md): a
-# baseline's instructions, the ratio, PASS/MISS. Sizes: CALLGRIND_SMALL / CALLGRIND_LARGE (thousand blocks);
+# baseline's instructions, the ratio, PASS/MISS. Sizes: CALLGRIND_SMALL / CALLGRIND_LARGE (thousand blocks, hundred holes);
 # CALLGRIND_ARGS="--rows grblhal toolpath" for some rows, "--reuse" to keep rows measured before.
 callgrind: compile
 	$(BIN)/pip install --quiet -r benchmarks/requirements.txt

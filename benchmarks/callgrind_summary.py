@@ -4,7 +4,7 @@ time, niced), with its baseline's instructions, the ratio and PASS/MISS against 
 with the machine's load as wall time does.
 
 Usage: python benchmarks/callgrind_summary.py [--rows ROW ...] [--reuse]
-   (sizes: CALLGRIND_SMALL / CALLGRIND_LARGE thousand blocks or holes, as callgrind.sh reads them)
+   (sizes: CALLGRIND_SMALL / CALLGRIND_LARGE, thousand blocks or hundred holes, as callgrind.sh reads them)
 
 The ratio of a throughput row is the baseline's instructions a unit over the row's (higher is faster: a
 rate ratio, as ``make bench``'s x); of a start-up row the row's instructions over the bare interpreter's
