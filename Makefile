@@ -10,7 +10,7 @@ PLUGINS := $(wildcard plugins/*/pyproject.toml)
 HOT    := $(shell sed -n '/^compiled = \[/,/^\]/p' pyproject.toml | grep -o '"[^"]*\.py"' | tr -d '"')
 NATIVE := $(VENV)/.compiled
 
-.PHONY: install compile bytecode run test bench typecheck fuzz differential clean
+.PHONY: install compile bytecode run test bench callgrind typecheck fuzz differential clean
 
 # The build's own requirements (pyproject.toml [build-system] requires: setuptools, the pinned mypy, pydantic),
 # installed into the venv once, so that no pip install below makes a throw-away build environment of its
@@ -76,6 +76,13 @@ test: install
 bench: compile
 	$(BIN)/pip install --quiet -r benchmarks/requirements.txt
 	$(BIN)/python benchmarks/run.py $(BENCH_ARGS)
+
+# The same rows in instructions (valgrind's callgrind, one row at a time, niced; docs/benchmarks.md): a
+# baseline's instructions, the ratio, PASS/MISS. Sizes: CALLGRIND_SMALL / CALLGRIND_LARGE (thousand blocks, hundred holes);
+# CALLGRIND_ARGS="--rows grblhal toolpath" for some rows, "--reuse" to keep rows measured before.
+callgrind: compile
+	$(BIN)/pip install --quiet -r benchmarks/requirements.txt
+	$(BIN)/python benchmarks/callgrind_summary.py $(CALLGRIND_ARGS)
 
 # The seeded differentials against LinuxCNC's rs274 at the full run's size (issue 26: 2,000 programs each, 200 in
 # `make test`): cutter and tool length compensation (and its grbl lowering), frames. Not in CI (about ten times

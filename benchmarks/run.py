@@ -4,7 +4,7 @@ targets of issue 30 marked PASS/MISS.
 Usage: python benchmarks/run.py [--quick] [--rows ROW ...] [--sizes N ...] [--runs R] [--holes H]
                                 [--macro-holes H] [--cache DIR] [--pygcode-max N] [--batch full|quick|tiny|skip]
 
-Rows: translate fanuc->fanuc/grbl/linuxcnc/isg/fagor (every lowering target, the lossless copy and --normalize) against gcode-lib's parse and a plain streaming
+Rows: translate fanuc->fanuc/grbl/grblhal/linuxcnc/isg/fagor (every lowering target, the lossless copy and --normalize) against gcode-lib's parse and a plain streaming
 loop, toolpath and verify against gcode-lib's position tracking, peak memory and its growth with program
 length (at each of --sizes); canned-cycle holes/s and a parametric loop's interpreted blocks/s against the plain loop over
 their output; start-up against a bare interpreter; batch files/s (benchmarks/batch.py). Every measured
@@ -31,7 +31,8 @@ import batch  # noqa: E402
 import generate  # noqa: E402
 import workloads  # noqa: E402
 from peers import PARSERS, PARTIAL, fanuc_decimals_copy  # noqa: E402
-from summary import Line, Target, at_least_x, print_summary  # noqa: E402
+from summary import (FLAT_TARGET, PLAIN_TARGET, RSS_TARGET_MB, TOOLPATH_TARGET, VERIFY_TARGET, Line,  # noqa: E402
+                     Target, at_least_x, print_summary)
 from timing import Runs, paired_ratio, rate, rounds  # noqa: E402
 from translations import TRANSLATIONS  # noqa: E402
 from workloads import PLAIN, PY, at_least_lines, cached, prepare, translate  # noqa: E402
@@ -39,14 +40,6 @@ from workloads import PLAIN, PY, at_least_lines, cached, prepare, translate  # n
 PEERS = [PY, str(HERE / "peers.py")]
 MACHINE = HERE / "machine.xml"
 """The tools of the generated programs (their G43 H01-H03): toolpath and verify simulate the lengths."""
-RSS_TARGET_MB = 64.0
-FLAT_TARGET = 1.10
-"""Peak RSS at the largest size over the smallest: "flat" allows 10 % for ten times the blocks."""
-PLAIN_TARGET = 0.8
-TOOLPATH_TARGET = 1.5
-"""toolpath: at least 1.5x gcode-lib's parse plus state tracking (issue 30)."""
-VERIFY_TARGET = 1.0
-"""verify: at least gcode-lib's parse plus state tracking over both files (issue 30)."""
 ROWS: dict[str, tuple[str, ...]] = {
     **{row: (t.label, "gcode-lib") + (("plain loop",) if row == "normalize" else ()) for row, t in TRANSLATIONS.items()},
     "toolpath": ("toolpath --format jsonl", "gcode-lib-state"),

@@ -5,6 +5,22 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+# The targets of issue 30 beyond the translations' (``translations.Translation.times_gcode_lib``): one table,
+# read by ``make bench`` (run.py, workloads.py) and by ``callgrind_summary.py``.
+PLAIN_TARGET = 0.8
+"""--normalize: at least 0.8x the plain loop (benchmarks/plainloop.py)."""
+TOOLPATH_TARGET = 1.5
+"""toolpath: at least 1.5x gcode-lib's parse plus state tracking (issue 30)."""
+VERIFY_TARGET = 1.0
+"""verify: at least gcode-lib's parse plus state tracking over both files (issue 30)."""
+HOLES_TARGET = 100_000.0
+"""Canned cycles: at least 100,000 holes/s expanded (a rate: wall clock only)."""
+STARTUP_TARGET_MS = 120.0
+"""Start-up: a one-line translation and ``postproc dialects`` under 120 ms (a duration: wall clock only)."""
+RSS_TARGET_MB = 64.0
+FLAT_TARGET = 1.10
+"""Peak RSS at the largest size over the smallest: "flat" allows 10 % for ten times the blocks."""
+
 
 @dataclass(frozen=True)
 class Target:

@@ -35,6 +35,7 @@ TRANSLATIONS: dict[str, Translation] = {
     "copy": Translation("fanuc", 2.0),
     "linuxcnc": Translation("linuxcnc", 1.5),
     "grbl": Translation("grbl", 1.5, warn=True, machine=True),
+    "grblhal": Translation("grblhal", 1.5, machine=True),
     "isg": Translation("isg", 1.5, machine=True),
     "fagor": Translation("fagor", 1.5, machine=True),
 }
@@ -43,7 +44,9 @@ own text where nothing changes); ``--normalize`` rewrites every block. grbl writ
 (about one block in 10,000) as ``G43.1 Z<length>`` from the bench machine's tools, and warns at what else it
 cannot express; ISG writes the closing ``G91 G28 Z0.`` as a move to the machine's Z home (the bench machine
 gives it); Fagor writes it as ``G53 G00 Z<home>`` from the same set-up, and needs the tools' lengths for
-``G43 H..``. Every lowering target (linuxcnc, grbl, isg, fagor) has issue 30's
+``G43 H..``; grblHAL (the grblHAL plugin), like grbl, writes ``G43 H..`` as ``G43.1 Z<length>`` from the
+machine's tools (without the set-up it refuses the program: no length for register 1). Every lowering target
+(linuxcnc, grbl, grblhal, isg, fagor) has issue 30's
 target of 1.5x gcode-lib's parse, the copy 2x, ``--normalize`` its former 1.5x (it keeps its lead)."""
 
 

@@ -110,7 +110,7 @@ def test_rounds_report_a_failing_command_and_a_wrong_output(tmp_path: Path) -> N
 
 SUMMARY_ROWS = [
     "translate fanuc->fanuc --normalize", "translate fanuc->fanuc (copy)", "translate fanuc->grbl (warn)",
-    "translate fanuc->linuxcnc", "translate fanuc->isg", "translate fanuc->fagor",
+    "translate fanuc->linuxcnc", "translate fanuc->grblhal", "translate fanuc->isg", "translate fanuc->fagor",
     "toolpath --format jsonl", "verify fanuc / linuxcnc", "peak RSS verify fanuc / linuxcnc",
     "RSS growth toolpath --format jsonl", "RSS growth verify fanuc / linuxcnc", "cycles fanuc->grbl", "cycles fanuc->linuxcnc",
     "macro WHILE loop fanuc->grbl", "start-up: translate a one-line program", "start-up: postproc dialects",
