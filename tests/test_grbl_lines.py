@@ -90,3 +90,14 @@ def test_a_shortened_number_reads_as_the_same_value(words: list[tuple[str, objec
     short = shortened(line)
     assert [float(w[1:]) for w in short.split()] == [float(str(value)) for _, value in words]
     assert kept(short) <= kept(line)
+
+
+@given(st.text(alphabet=st.characters(blacklist_categories=()), max_size=40))
+def test_plain_ascii_says_what_the_realtime_rule_says(text: str) -> None:
+    """``plain_ascii`` (one encoding with ``replace``, then a byte table) holds exactly for ASCII text without a
+    character grbl acts on (``REALTIME``), whatever the text holds: surrogates (a byte read with surrogateescape),
+    characters beyond the BMP, control characters."""
+    from postproc.grbl_family.text import REALTIME, plain_ascii
+    assert plain_ascii(text) == (text.isascii() and not REALTIME.search(text))
+    for extra in ("\udcff", "\U0001f600", "\x7f", "?", "\u00e9"):
+        assert not plain_ascii(text + extra)

@@ -16,7 +16,7 @@ from postproc.errors import Diagnostics, ErrorLevel
 from postproc.ir import Motion
 from postproc.ir.state import MM_PER_INCH
 from postproc.lowering.arc_geometry import r_centre_error
-from postproc.lowering.arcs import R_FORM_TOLERANCE_MM, SETTLE, WRITE_SLACK_MM, ArcOption, _Geometry, _Rewriter
+from postproc.lowering.arcs import R_FORM_TOLERANCE_MM, SETTLE, WRITE_SLACK_MM, ArcOption, _Rewriter
 from postproc.plugins import default_registry
 from postproc.setup.machine_setup import MachineSetup
 
@@ -33,7 +33,7 @@ def _rewriter(target: str, inch: bool, start: tuple[float, float]) -> _Rewriter:
 def _general_keeps_r(rewriter: _Rewriter, motion: Motion, share: float) -> bool:
     """The general test of ``_settle_radius``: the arc keeps its R (its centre moves within the tolerance)."""
     mm = MM_PER_INCH if rewriter.state.units == "inch" else 1.0
-    arc = _Geometry(rewriter, motion, False, ("X", "Y")).arc()
+    arc = rewriter.words(motion, False, ("X", "Y")).arc()
     slack = WRITE_SLACK_MM / mm + abs(float(motion.radius)) * share  # type: ignore[arg-type]
     return r_centre_error(arc, slack) * mm <= R_FORM_TOLERANCE_MM
 

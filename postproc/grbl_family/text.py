@@ -50,8 +50,16 @@ _COMMENT = re.compile(r"\([^)]*\)?|;.*")
 def plain_ascii(text: str) -> bool:
     """``text`` is ASCII without a character of ``REALTIME``: no byte of it is marked (a byte loop in C.
     Deleting the plain bytes instead, ``translate(None, delete)``, builds a table of 256 entries a call:
-    1,500 instructions, a twentieth of a written block's cost, measured with callgrind)."""
-    return text.isascii() and 1 not in text.encode("ascii").translate(_MARKED)  # an int: no TypeError tried first
+    1,500 instructions, a twentieth of a written block's cost, measured with callgrind). Text beyond ASCII
+    fails its encoding (a comment's rare accent or a lone surrogate: an exception, a few thousand
+    instructions): ``str.isascii`` first was a generic method call compiled, and ``encode("ascii", "replace")``
+    mypyc's general ``CPy_Encode``; the strict ASCII encoding is a direct call (-256 instructions a call,
+    callgrind of a mypyc build of the three forms)."""
+    try:
+        data = text.encode("ascii")
+    except UnicodeEncodeError:
+        return False
+    return 1 not in data.translate(_MARKED)  # an int: no TypeError tried first
 
 
 def grbl_safe(text: str) -> str:

@@ -21,6 +21,10 @@ Decisions (docs/cli.md says the same):
 - The start point must be known (programmed absolutely since the origin last moved) unless every word
   of the arc is incremental; else a located error. A program that computes is executed (flattened):
   an arc in a loop starts somewhere else each time.
+
+Here: what an arc becomes (the passes, their position tracking and the forms' rules); an arc's words as
+numbers and back (absolute or incremental, diameters, increment addresses) are ``arc_words.ArcWords``, the
+plane arithmetic (chords, R pieces, centre errors) ``arc_geometry``.
 """
 
 from __future__ import annotations
@@ -43,6 +47,7 @@ from ..numbers import EXACT
 from ..ir.state import MM_PER_INCH, PLANE_AXES, ModalState, changes_nothing
 from .lower import BlockStep, LoweringStep, run_blocks
 from .arc_geometry import Arc, chord_points, r_centre_error, r_pieces, signed_radius, split
+from .arc_words import ArcWords
 from .point_after import cycle_end
 
 FORMS: Final = ("lines", "ijk", "r")
@@ -156,7 +161,10 @@ class _Arcs(BlockStep):
 
     def take_move(self, block: Block) -> list[Block] | None:
         """``take`` for a block that is only a move: a straight move while the position is ``plain`` moves it to its
-        words, as ``_track`` does (~2.5k instructions a block compiled through ``take``: every grbl translation)."""
+        words, as ``_track`` does (~2.5k instructions a block compiled through ``take``: every grbl translation).
+        While nothing read is symbolic (``ModalState.symbolic``: no word of the program so far is an ``Expr``, as
+        ``postproc.frames.lowering`` asks) every word is a number: one ``dict.update`` (a loop that unboxed and
+        boxed each float, ~1.3k instructions a block compiled)."""
         rewriter = self.rewriter
         if rewriter.plain:
             motion = block.sections["Motion"]
@@ -164,6 +172,9 @@ class _Arcs(BlockStep):
                 mode = motion.mode
                 if mode == "linear" or mode == "rapid":
                     position = rewriter.position
+                    if not self.ctx.state.symbolic:
+                        position.update(motion.axes)  # type: ignore[arg-type]  # numbers: nothing is symbolic yet
+                        return None
                     for axis, value in motion.axes.items():  # (a float first: cheap compiled, an Expr test is not)
                         position[axis] = value if isinstance(value, float) or not isinstance(value, Expr) else None
                     return None
@@ -329,7 +340,7 @@ class _Rewriter:
             raise UnsupportedError("--arcs: an arc in polar coordinates (kept for the target) cannot be rewritten")
         plane = self.state.plane
         a1, a2, _ = PLANE_AXES[plane]
-        geometry = _Geometry(self, motion, incremental, (a1, a2))
+        geometry = self.words(motion, incremental, (a1, a2))
         arc = geometry.arc()
         if form == "lines":
             mm = self._mm()
@@ -367,7 +378,7 @@ class _Rewriter:
             return None
         a1, a2, _ = PLANE_AXES[self.state.plane]
         try:
-            geometry = _Geometry(self, motion, incremental, (a1, a2))
+            geometry = self.words(motion, incremental, (a1, a2))
         except ProgramError:  # the start is not known here: the arc is judged when the program runs
             self._track(motion, incremental, machine)
             return None
@@ -393,7 +404,7 @@ class _Rewriter:
             return None
         a1, a2, _ = PLANE_AXES[self.state.plane]
         try:
-            geometry = _Geometry(self, motion, incremental, (a1, a2))
+            geometry = self.words(motion, incremental, (a1, a2))
             arc = geometry.arc()
         except ProgramError:  # the start is not known here, or the arc cannot be run: judged where it runs
             self._track(motion, incremental, machine)
@@ -433,7 +444,7 @@ class _Rewriter:
         return math.sqrt((r - half) * (r + half)) - math.sqrt((low - half) * (low + half)) \
             <= R_FORM_TOLERANCE_MM / 2.0
 
-    def _r_form(self, block: Block, arc: Arc, geometry: "_Geometry", mode: str) -> list[Motion] | None:
+    def _r_form(self, block: Block, arc: Arc, geometry: ArcWords, mode: str) -> list[Motion] | None:
         mm = self._mm()
         slack = WRITE_SLACK_MM / mm
         pieces = [arc] if r_centre_error(arc, slack) * mm <= R_FORM_TOLERANCE_MM else split(
@@ -464,6 +475,10 @@ class _Rewriter:
             raise UnsupportedError("--arcs lines: an arc under scaling the target keeps cannot become lines (the "
                                    "scaling would scale the chord tolerance)")
 
+    def words(self, motion: Motion, incremental: bool, plane: tuple[str, str]) -> ArcWords:
+        """The arc of ``motion`` as numbers, from where the program stands (``ArcWords``)."""
+        return ArcWords(self.state, self.ctx, self.diameter, motion, incremental, plane)
+
     def _mm(self) -> float:
         """mm per program unit."""
         return MM_PER_INCH if self.state.units == "inch" else 1.0
@@ -486,118 +501,3 @@ class _Rewriter:
             if key == "CompoundMotion" or after_motion(key, section):
                 last[key] = block.sections.pop(key)
         return out
-
-
-@mypyc_attr(allow_interpreted_subclasses=True)
-class _Geometry:
-    """One arc's numbers: its plane points in true geometry (a diameter halved), and how to write a
-    point back in the arc's own words (absolute or incremental per address, a diameter doubled)."""
-
-    def __init__(self, owner: _Rewriter, motion: Motion, incremental: bool, plane: tuple[str, str]) -> None:
-        self.owner = owner
-        self.source = motion
-        self.plane = plane
-        self.quantum = 1e-7 if owner.state.units == "inch" else 1e-6
-        """Intermediate points are rounded to this (program units): finer than the writer's ``EXACT``."""
-        increments = owner.ctx.increments
-        self.diameter = owner.diameter
-        if isinstance(motion.radius, Expr) or any(isinstance(v, Expr) for v in (motion.center or {}).values()):
-            raise UnsupportedError("--arcs: a computed arc cannot be rewritten")
-        self.forms: dict[str, tuple[bool, str]] = {}
-        """Real axis -> (written as an increment, address)."""
-        given: dict[str, float] = {}
-        for address, value in motion.axes.items():
-            if isinstance(value, Expr):
-                raise UnsupportedError("--arcs: a computed arc cannot be rewritten")
-            real = increments.get(address) if increments else None
-            self.forms[real or address] = (incremental or real is not None, address)
-            given[real or address] = value
-        position = owner.state.position
-        axes = set(plane) | set(given)
-        self.relative = any(position.get(a) is None for a in axes)
-        """The start is not known: the arc is computed from its start taken as zero (all its words are increments)."""
-        backwards = {real: address for address, real in increments.items()} if increments else {}
-        for a in plane:
-            if a in self.forms:
-                continue
-            if incremental:
-                self.forms[a] = (True, a)
-            elif not self.relative:
-                self.forms[a] = (False, a)
-            elif a in backwards:
-                self.forms[a] = (True, backwards[a])
-        if self.relative and (len(self.forms) < len(axes) or not all(inc for inc, _ in self.forms.values())):
-            raise ProgramError("--arcs: the start point of this arc is not known here (program an absolute move on "
-                               "its axes after the origin moved)")
-        self.start = {a: 0.0 if self.relative else float(position[a]) for a in axes}  # type: ignore[arg-type]
-        self.end = {a: self.start[a] + v if self.forms[a][0] else v for a, v in given.items()}
-        for a in plane:
-            self.end.setdefault(a, self.start[a])
-        self.written = dict(self.start)
-        """The point the previous piece ended at (an increment of the next piece is relative to it)."""
-
-    def _geo(self, axis: str, value: float) -> float:
-        return value * 0.5 if self.diameter and axis == "X" else value
-
-    def _prog(self, axis: str, value: float) -> float:
-        return value * 2.0 if self.diameter and axis == "X" else value
-
-    def arc(self) -> Arc:
-        from ..block_rules import ArcError, arc_centre
-        a1, a2 = self.plane
-        s = (self._geo(a1, self.start[a1]), self._geo(a2, self.start[a2]))
-        e = self.end_geo()
-        mm = self.owner._mm()
-        m = self.source
-        offsets = {a: float(v) for a, v in (m.center or {}).items()}  # type: ignore[arg-type]
-        for axis in offsets:
-            if axis not in self.plane:
-                raise ProgramError(f"arc centre offset along {axis} is outside the {self.owner.state.plane} plane")
-        radius = None if m.radius is None else float(m.radius) * mm  # type: ignore[arg-type]  # checked above
-        try:
-            c = arc_centre((s[0] * mm, s[1] * mm), (e[0] * mm, e[1] * mm), self.plane, radius,
-                           {a: v * mm for a, v in offsets.items()}, m.mode == "cw", self.owner.ctx.arc_end,
-                           mm != 1.0, mm)
-        except ArcError as err:
-            raise ProgramError(err.message) from None
-        if c is None:
-            raise ProgramError("--arcs: a zero-radius arc cannot be rewritten")
-        along = {a: (self.start[a], self.end[a]) for a in self.end if a not in self.plane}
-        return Arc(s, e, (c[0] / mm, c[1] / mm), m.mode == "cw", along)
-
-    def end_geo(self) -> tuple[float, float]:
-        a1, a2 = self.plane
-        return self._geo(a1, self.end[a1]), self._geo(a2, self.end[a2])
-
-    def piece(self, mode: str, point: tuple[float, float], others: dict[str, float],
-              centre: tuple[float, float] | None, radius: float | None) -> Motion:
-        """A piece ending at ``point`` (true geometry) with the other axes at ``others``, in the arc's words;
-        ``centre`` as offsets from the piece's start (true geometry: a lathe's I is a radius)."""
-        a1, a2 = self.plane
-        target = dict(others)
-        if point == self.end_geo():
-            target[a1], target[a2] = self.end[a1], self.end[a2]  # the programmed values themselves
-        else:
-            target[a1], target[a2] = self._prog(a1, point[0]), self._prog(a2, point[1])
-        axes: dict[str, float | Expr] = {}
-        for axis in sorted(target, key=_axis_order):
-            increment, address = self.forms[axis]
-            axes[address] = round(target[axis] - self.written[axis], 9) if increment else target[axis]
-        self.written.update(target)
-        centre_words: dict[str, float | Expr] | None = None if centre is None else {a1: centre[0], a2: centre[1]}
-        return Motion(mode, axes, centre_words, radius)
-
-    def finish(self) -> None:
-        """The position after the arc: its end (absolute), or moved by its increments."""
-        position = self.owner.state.position
-        for axis, value in self.end.items():
-            if self.relative:
-                known = position.get(axis)
-                position[axis] = None if known is None else known + value
-            else:
-                position[axis] = value
-
-
-def _axis_order(axis: str) -> int:
-    order = "XYZUVWABC"
-    return order.index(axis) if axis in order else len(order)
