@@ -237,8 +237,6 @@ class Position:
         increments = self.increments if len(self.increments) else None  # empty on a mill: tested once, not a word
         factors = self.factors
         index = self.index
-        names = self.axes
-        count = len(names)
         for axis, value in axes.items():
             if not isinstance(value, float) and isinstance(value, Expr):  # a float first: one type test a word
                 raise ProgramError(UNEVALUATED, self._at(block, axis))
@@ -251,14 +249,8 @@ class Position:
                 v = value * self.scale * (0.5 if self.diameter and real == "X" else 1.0)
                 out[r] = out[r] + v
                 continue
-            i = -1
-            for j in range(count):  # the reader's letter is most often the very string of ``axes`` (one-letter
-                if names[j] is axis:  # strings are shared): an identity test each, where a look-up cost ~120
-                    i = j
-                    break
-            if i < 0:
-                i = index.get(axis, -1)
-            if i < 0:
+            i = index.get(axis, -1)  # (a look-up: an identity scan of ``axes`` cost verify more, callgrind
+            if i < 0:  # simfast6: a LinuxCNC translation's letters are not the set-up's string objects)
                 raise ProgramError(f"axis {axis} is not on this machine (axes {''.join(self.axes)})",
                                    self._at(block, axis))
             v = value * factors[i]

@@ -10,7 +10,7 @@ they are read back, which happens once, when the program first computes. Lines w
 
 from __future__ import annotations
 
-from typing import Final, Iterator, Union, cast
+from typing import Final, Iterator, Union
 
 from mypy_extensions import mypyc_attr
 
@@ -46,17 +46,14 @@ class KeptLines:
             self._drop_oldest()
 
     def _close(self) -> None:
-        """The open chunk joined, where its lines are plain: strings holding no ``\\n`` (the joined text then
-        holds one fewer than its lines); else kept as the list. Joined first and its line ends counted in one
-        C call: a test of each line (``in``, ~100 instructions compiled) cost as much as the join."""
         lines = self.open
         self.open = []
-        try:
-            text = "\n".join(cast("list[str]", lines))
-        except TypeError:  # a line with another end, or none (a tuple, None)
-            self.chunks.append(lines)
-            return
-        self.chunks.append(text if text.count("\n") == len(lines) - 1 else lines)
+        plain = True
+        for item in lines:
+            if not isinstance(item, str) or "\n" in item:
+                plain = False
+                break
+        self.chunks.append("\n".join(lines) if plain else lines)  # type: ignore[arg-type]
 
     def _drop_oldest(self) -> None:
         self.size -= 1
