@@ -268,6 +268,7 @@ class CompensatedMoves(Position):
         at, rounded, before = self.at, self.rounded, self.crounded
         offset = self.length.offset
         shifts = self.lathe_shift
+        shifted = len(shifts) != 0  # (tested once, not an axis: a mill has none)
         length_at = self.length_index
         axes = self.axes
         point: list[float | int] = []
@@ -285,7 +286,7 @@ class CompensatedMoves(Position):
             c: Any = r
             if i == length_at:
                 c = num(value + offset)
-            if shifts:
+            if shifted:
                 shift = shifts.get(axes[i])
                 if shift is not None:
                     c = num(value + shift + (offset if i == length_at else 0.0))

@@ -310,10 +310,48 @@ def _keyed_float_parts(value: float, keyed: _KeyedNumbers, parts: list[str]) -> 
             if whole < _TABLED:
                 piece = keyed.negatives[whole] if negative else keyed.wholes[whole]
                 parts.append(piece if piece is not None else keyed.whole(whole, negative))
-                _fraction_parts(magnitude - whole * _UNITS, parts)
+                fraction = magnitude - whole * _UNITS
+                if fraction % _SHORT_STEP == 0:  # ``_fraction_parts``' first case here: a call less a number
+                    index = fraction // _SHORT_STEP
+                    text = _SHORT[index]
+                    parts.append(text if text is not None else _short_text(index))
+                else:
+                    _fraction_parts(fraction, parts)
                 return
     parts.append(keyed.text)
     _float_parts(value, parts)
+
+
+_LINE_LOW: Final[list[str | None]] = [None] * _TABLED
+"""A line number below ``_TABLED`` -> the line's opening text with it (``'{"line": 80'``), made the first time met."""
+_LINE_HIGH: Final[list[str | None]] = [None] * _TABLED
+"""A line number's thousands (from 1) -> the line's opening text with them (``'{"line": 12'`` for 12,345), made the
+first time met; ``_PADDED`` follows with the last three digits."""
+_PADDED: Final = [f"{n:03d}" for n in range(_TABLED)]
+_LINES_TABLED: Final = _TABLED * _TABLED
+
+
+def _line_parts(line: int, parts: list[str]) -> None:
+    """Append a record's opening brace with its ``line`` item (``'{"line": 12345'``): from tables, one piece below
+    ``_TABLED`` and two below ``_LINES_TABLED``, where ``str`` of the number cost ~220 instructions a line
+    (compiled; a line has a new number)."""
+    if 0 <= line < _TABLED:
+        text = _LINE_LOW[line]
+        if text is None:
+            text = _KEYS_LINE + _WHOLE[line]
+            _LINE_LOW[line] = text
+        parts.append(text)
+    elif _TABLED <= line < _LINES_TABLED:
+        high = line // _TABLED
+        text = _LINE_HIGH[high]
+        if text is None:
+            text = _KEYS_LINE + _WHOLE[high]
+            _LINE_HIGH[high] = text
+        parts.append(text)
+        parts.append(_PADDED[line - high * _TABLED])
+    else:
+        parts.append(_KEYS_LINE)
+        parts.append(str(line))
 
 
 _CLOSE: Final = "}"
@@ -332,8 +370,7 @@ def _record_parts(record: MoveRecord, parts: list[str], line_end: bool) -> None:
     keys = record.keys
     if keys is not texts.keys:
         texts.update(keys)
-    parts.append(_KEYS_LINE)
-    parts.append(str(record.line))
+    _line_parts(record.line, parts)
     kind = record.kind
     if kind is not texts.kind:
         word = _WORDS.get(kind)
@@ -343,7 +380,11 @@ def _record_parts(record: MoveRecord, parts: list[str], line_end: bool) -> None:
     later = texts.later
     point = record.point
     for i in range(len(keys)):
-        _keyed_number_parts(point[i], later[i], parts)
+        value = point[i]
+        if isinstance(value, float):  # (most often: the float's own call, not through the union's)
+            _keyed_float_parts(value, later[i], parts)
+        else:
+            _keyed_number_parts(value, later[i], parts)
     centre = record.centre
     if centre is not None:  # an arc: its centre and plane
         centre_keys = record.centre_keys
@@ -378,7 +419,11 @@ def _record_parts(record: MoveRecord, parts: list[str], line_end: bool) -> None:
             return
     first = texts.first
     for i in range(len(keys)):
-        _keyed_number_parts(controlled[i], first[i], parts)
+        value = controlled[i]
+        if isinstance(value, float):
+            _keyed_float_parts(value, first[i], parts)
+        else:
+            _keyed_number_parts(value, first[i], parts)
     if ccentre is not None:
         centre_keys = record.centre_keys
         for i in range(len(centre_keys)):
