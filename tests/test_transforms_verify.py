@@ -236,3 +236,35 @@ def test_translate_then_verify_on_the_command_line(cli: Any, tmp_path: Path) -> 
     machine = ["--machine", TOUCHED_OFF]
     assert cli("verify", source, out, "--from", "fanuc", "--to", "linuxcnc", *machine, *how).status == 0
     assert cli("verify", source, out, "--from", "fanuc", "--to", "linuxcnc", *machine).status == 1
+
+
+# -- a reference return under a tool length ------------------------------------------------------------------
+HELD_UNDER_LENGTH = """%
+O0001
+G21 G90 G17 G54
+T1 M6
+G43 H1 G0 X10. Y5. Z50.
+G1 Z-2. F100.
+X20.
+G91 G28 Z0.
+G90 G0 X30. Y10.
+M30
+%
+"""
+
+
+def test_a_reference_return_under_a_tool_length_is_held_where_the_map_moves_its_axis() -> None:
+    """``G91 G28 Z0.`` with H1's length in force, translated with ``translate 0,0,-1``: the return goes to the
+    machine's Z reference whatever the map does (the translation keeps ``G91 G28 Z0.``: an incremental 0 is the
+    tool's own position, moved with it), and ``X30. Y10.`` after it stays at that Z. By hand, the right output
+    is the source with Z50. -> Z49. and Z-2. -> Z-3.; verify held the return's leg only when no length was in
+    force (the compensated leg bypassed the marking) and said 1 mm off for it."""
+    setup = load_setup(str(ROOT / "benchmarks" / "machine.xml"))
+    right = translated(HELD_UNDER_LENGTH, "fanuc", "fanuc", "translate 0,0,-1", setup=setup)
+    zs = [word for line in right.splitlines() for word in line.split() if word.startswith("Z")]
+    assert zs == ["Z49.", "Z-3.", "Z0."] and "G91 G28 Z0." in right and "X30. Y10." in right
+    report = verified(HELD_UNDER_LENGTH, right, "fanuc", "fanuc", "translate 0,0,-1", setup=setup)
+    assert report.ok and report.max_deviation == 0.0
+    # the return's intermediate point moved 5 mm up, against the way home: a different path, seen
+    wrong = right.replace("G91 G28 Z0.", "G91 G28 Z5.")
+    assert not verified(HELD_UNDER_LENGTH, wrong, "fanuc", "fanuc", "translate 0,0,-1", setup=setup).ok

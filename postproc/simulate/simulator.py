@@ -450,12 +450,18 @@ class Simulator(Moves):
                 travel.home(block, self._programmed(m.axes))
             if self.mark_held:
                 legs: list[Emitted] = []
-                self.line_move("rapid", ref, line, legs.append)
+                out = self.out
+                self.out = legs.append  # a compensated leg (a tool length in force) comes through ``out``
+                try:
+                    self.line_move("rapid", ref, line, legs.append)
+                finally:
+                    self.out = out
                 held = "".join(sorted(self._programmed(m.axes))).lower()
                 for leg in legs:
                     ev = leg.event() if isinstance(leg, MoveRecord) else leg  # (a ``mark_held`` run makes none)
-                    ev["held"] = held
-                    emit(ev)
+                    if ev.get("line") == line:  # (not a move of an earlier block the cutter queue lets go now)
+                        ev["held"] = held
+                    out(ev)
             else:
                 self.line_move("rapid", ref, line, emit)
             return
