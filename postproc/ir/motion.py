@@ -77,17 +77,25 @@ class Motion(Section):
 @mypyc_attr(allow_interpreted_subclasses=True)
 class CompoundMotion(Section):
     """The explicit motion a construct stands for (a canned cycle's rapids, feeds, dwells, spindle
-    actions), in execution order. Moves inside are absolute, in program units."""
+    actions), in execution order. Moves inside are absolute, in program units.
+
+    ``end``/``ended``: where the moves leave the axes, as ``postproc.lowering.point_after.compound_end``
+    found it the first time a step asked (every step that follows the point asks it of every expanded
+    hole: walked once, not once a step). Setting ``items`` forgets it; the items are not changed in place
+    after it is asked (the cycle expansion's own touches, ``expand_canned_cycles``, come before)."""
 
     XNAME = "CompoundMotion"
 
     KEY = "CompoundMotion"
-    __slots__ = ("term", "_items", "_make")
+    __slots__ = ("term", "_items", "_make", "end", "ended")
 
     def __init__(self, term: str, items: list[Section]) -> None:
         self.term = term
         self._items: list[Section] | None = items
         self._make: Callable[[], list[Section]] | None = None
+        self.end: dict[str, float | None] | None = None
+        """The moves' end (``point_after.compound_end``: read only), once ``ended``."""
+        self.ended = False
 
     @classmethod
     def lazy(cls, term: str, make: Callable[[], list[Section]]) -> "CompoundMotion":
@@ -111,6 +119,7 @@ class CompoundMotion(Section):
     @items.setter
     def items(self, items: list[Section]) -> None:
         self._items, self._make = items, None
+        self.end, self.ended = None, False  # other moves: their end is found again
 
     @classmethod
     def from_xml(cls, el: etree._Element) -> "CompoundMotion":

@@ -61,16 +61,30 @@ def cycle_end(cycle: Section) -> dict[str, float] | None:
 def compound_end(compound: CompoundMotion) -> dict[str, float | None] | None:
     """Where an expanded construct's moves (a cycle's: absolute, program units) leave the axes they move: each
     at its last move's number (None: computed); an axis they do not move stays where it was. None where the
-    point is not known at all after them (a move other than G0-G3 among them). One dictionary for the whole
-    block: every expanded hole of a translation that follows the point passes here."""
+    point is not known at all after them (a move other than G0-G3 among them). Found once a construct and
+    kept on it (``CompoundMotion.end``): every step that follows the point asks it of every expanded hole
+    (the cutter resolver, the tool length timing). The answer is shared: read it, never change it."""
+    if compound.ended:
+        return compound.end
+    moved = _moves_end(compound.items)
+    compound.end, compound.ended = moved, True
+    return moved
+
+
+def _moves_end(items: list[Section]) -> dict[str, float | None] | None:
+    """``compound_end``'s walk over the items. (A float word is tested as a float first: compiled, that is a
+    type check, where ``isinstance(value, Expr)`` of a float is a generic look-up of ``__class__``.)"""
     moved: dict[str, float | None] = {}
-    for item in compound.items:
+    for item in items:
         if not isinstance(item, Motion):
             continue
         if item.mode not in MOVES:
             return None
         for axis, value in item.axes.items():
-            moved[axis] = None if isinstance(value, Expr) else value
+            if isinstance(value, float):
+                moved[axis] = value
+            else:
+                moved[axis] = None if isinstance(value, Expr) else value
     return moved
 
 

@@ -58,6 +58,13 @@ class MotionWords(SectionWords):
         self.motion_codes: dict[str, str] = {}
         """Motion mode -> its code, spelled once (``CodeTable.spell`` is a Python call; an expansion
         writes a code per move)."""
+        cls = type(self)
+        self._driven_axes: frozenset[str] | None = cls.DRIVEN_AXES
+        self._full_circle_helix: bool = cls.FULL_CIRCLE_HELIX
+        self._zero_radius_arc: str = cls.ZERO_RADIUS_ARC
+        """The class's ``DRIVEN_AXES``, ``FULL_CIRCLE_HELIX`` and ``ZERO_RADIUS_ARC``, read once: compiled, a
+        class attribute a plugin's (interpreted) class may override is a look-up by name, three a move
+        (~900 instructions a line of an expanded cycle)."""
 
     def left_out(self, s: Motion, block: Block) -> bool:
         """A bare feed motion code the target refuses with no feed rate in force
@@ -70,12 +77,12 @@ class MotionWords(SectionWords):
         return isinstance(rate, (int, float)) and rate == 0 or rate is None
 
     def motion_words(self, s: Motion, block: Block) -> list[str]:
-        driven = self.DRIVEN_AXES
+        driven = self._driven_axes
         if driven is not None:
             for axis in s.axes:
                 if axis not in driven:
                     self.unsupported(f"motion of axis {axis} ({self.DIALECT} drives {_listed(driven)})", block)
-        if not self.FULL_CIRCLE_HELIX and (s.mode == "cw" or s.mode == "ccw"):
+        if not self._full_circle_helix and (s.mode == "cw" or s.mode == "ccw"):
             plane = block.sections.get("Plane")
             first, second, _ = PLANE_AXES[plane.plane if plane is not None else self.modal.plane]  # type: ignore[attr-defined]
             if first not in s.axes and second not in s.axes:
@@ -84,7 +91,7 @@ class MotionWords(SectionWords):
             self.check_reference_return(s, block)
             if not s.axes:
                 return []  # a return naming no axis moves none (Fanuc); a bare code would move every axis (LinuxCNC)
-        elif self.ZERO_RADIUS_ARC and (s.mode == "cw" or s.mode == "ccw") and s.radius is None \
+        elif self._zero_radius_arc and (s.mode == "cw" or s.mode == "ccw") and s.radius is None \
                 and s.center is not None and tiny_arc(s.center, self.MIN_ARC_RADIUS[self.modal.units == "inch"]):
             self.unsupported(f"an arc of zero radius (a controller that runs it does nothing; {self.ZERO_RADIUS_ARC})"
                              if tiny_arc(s.center, 0.0) else

@@ -40,7 +40,9 @@ class CommentSyntax:
         """``text`` made safe to stand inside a comment: brackets for parentheses, spaces for line breaks
         and control characters, then the controller's own cleaning (``clean``). Whether the comment it
         stands in acts is the whole comment's business (``text``, ``comments``)."""
-        safe = text.replace("(", "[").replace(")", "]").translate(_BREAKS)
+        safe = text.replace("(", "[").replace(")", "]")
+        if not safe.isprintable():  # every character ``_BREAKS`` maps is unprintable: the common text skips a
+            safe = safe.translate(_BREAKS)  # translate that looks each character up in the table (~600 each)
         return self.clean(safe) if self.clean is not None else safe
 
     def text(self, text: str) -> str:
