@@ -11,6 +11,8 @@ version) on closed profiles, where both versions agree, and on LinuxCNC's own de
 
 from __future__ import annotations
 
+import math
+
 import io
 import random
 import re
@@ -667,6 +669,10 @@ def test_g70_without_allowance_follows_the_profile(seed: int) -> None:
     except NgcCycleError:
         return  # a profile the controller refuses (not monotonic): checked against rs274 above
     expected = [(s.x, s.z) for s in case.steps]
+    if any(math.dist(a, b) < 2e-3 for a, b in zip(expected, expected[1:])):
+        return  # a piece shorter than 0.001 mm is dropped before the finish (the engine's ``corners``, after the
+        # ``do_finish`` of the installed rs274's interp_g7x.cc as the engine cites it): held to rs274 by the
+        # differential above, not by this hand rule (a chord of 0.002 mm or more is a piece of 0.001 mm or more)
     assert [m["move"] for m in moves[:3]] == ["rapid"] * 3  # (the helper's rapid to the cycle's point first)
     assert (moves[2]["x"], moves[2]["z"]) == pytest.approx(expected[0])  # (the first rapid may stop short of
     # the cycle's point: the approach is cut back to the profile's start Z, or X for a facing profile)
