@@ -9,7 +9,8 @@ Usage: python benchmarks/callgrind_summary.py [--rows ROW ...] [--reuse]
 The ratio of a throughput row is the baseline's instructions a unit over the row's (higher is faster: a
 rate ratio, as ``make bench``'s x); of a start-up row the row's instructions over the bare interpreter's
 (``make bench``'s "x = times its ms"). A target on a rate or a duration (holes/s, ms) is wall-clock only:
-printed with ``n/a``. ``--reuse`` takes a row already measured at the same sizes and build (its line is kept
+printed with ``n/a``; each is judged on the line below it as restated against a peer (``summary.py``:
+gcode-lib's instructions a block over ours a hole, ours a start over the bare interpreter's). ``--reuse`` takes a row already measured at the same sizes and build (its line is kept
 under ``$TMPDIR/postproc-callgrind/summary``) instead of measuring it again.
 """
 from __future__ import annotations
@@ -25,8 +26,8 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 
-from summary import (HOLES_TARGET, PLAIN_TARGET, STARTUP_TARGET_MS, TOOLPATH_TARGET, VERIFY_TARGET,  # noqa: E402
-                     Target, at_least_x, fmt)
+from summary import (HOLES_TARGET, HOLES_TIMES_GCODE_LIB, PLAIN_TARGET, STARTUP_TARGET_MS,  # noqa: E402
+                     STARTUP_TIMES_BARE, TOOLPATH_TARGET, VERIFY_TARGET, Target, at_least_x, fmt)
 from translations import TRANSLATIONS  # noqa: E402
 
 
@@ -100,11 +101,16 @@ def table() -> list[Row]:
         rows.append(Row(f"cycles fanuc->{target}", Measure("cycles", target), "plain loop over its output",
                         Measure("cycles", f"plainloop:{target}"),
                         Target("figure", ">=", HOLES_TARGET, ">= 100,000/s"), "hole", "cycles"))
+        rows.append(Row(f"cycles fanuc->{target}", Measure("cycles", target), "gcode-lib parse (its block / our hole)",
+                        GCODE_LIB, at_least_x(HOLES_TIMES_GCODE_LIB), "hole", "cycles"))
     rows.append(Row("macro WHILE loop fanuc->grbl", Measure("macro", "grbl"), "plain loop over its output",
                     Measure("macro", "plainloop:grbl"), None, "block", "macro"))
     for what, tgt in (("translate a one-line program", "grbl"), ("postproc dialects", "dialects")):
         rows.append(Row(f"start-up: {what}", Measure("startup", tgt), "'python -c pass' (x = times its instr)",
                         BARE, Target("figure", "<", STARTUP_TARGET_MS, "< 120 ms"), "start", "startup"))
+        rows.append(Row(f"start-up: {what}", Measure("startup", tgt), "'python -c pass' (x = times its instr)",
+                        BARE, Target("ratio", "<=", STARTUP_TIMES_BARE, f"<= {STARTUP_TIMES_BARE:g}x bare"),
+                        "start", "startup"))
     return rows
 
 

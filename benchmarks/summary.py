@@ -14,9 +14,20 @@ TOOLPATH_TARGET = 1.5
 VERIFY_TARGET = 1.0
 """verify: at least gcode-lib's parse plus state tracking over both files (issue 30)."""
 HOLES_TARGET = 100_000.0
-"""Canned cycles: at least 100,000 holes/s expanded (a rate: wall clock only)."""
+"""Canned cycles: at least 100,000 holes/s expanded (a rate: judged on the wall clock as the issue set it)."""
+HOLES_TIMES_GCODE_LIB = 0.32
+"""The same target against a peer measured in the same run, so that it judges the code, not the machine: on
+the machine where it was set (2026-11-24, docs/benchmarks.md) gcode-lib parsed the 100,000-block CAM program
+at 308,050 blocks/s (477,477 blocks/s of ``--normalize``, 1.55x it), so 100,000 holes/s was a hole in at
+most 308,050 / 100,000 = 3.1 of gcode-lib's blocks: holes/s over gcode-lib's blocks/s >= 0.32, and in
+instructions (``make callgrind``) gcode-lib's a block over ours a hole >= 0.32. Today's machine is about 1.5
+times slower for both (gcode-lib 210,673 blocks/s, quiet, 2026-12-01), where 100,000 holes/s asks 0.47."""
 STARTUP_TARGET_MS = 120.0
-"""Start-up: a one-line translation and ``postproc dialects`` under 120 ms (a duration: wall clock only)."""
+"""Start-up: a one-line translation and ``postproc dialects`` under 120 ms (a duration: the wall clock)."""
+STARTUP_TIMES_BARE = 5.2
+"""The same target against a bare ``python -c pass`` started in the same run: 120 ms over its 23 ms on the
+quiet development machine of 2026-12-01 (``make bench``'s start-up rows). Stricter than the issue's
+(set on a machine about 1.5 times faster, where the bare start took less), and judged in instructions too."""
 RSS_TARGET_MB = 64.0
 FLAT_TARGET = 1.10
 """Peak RSS at the largest size over the smallest: "flat" allows 10 % for ten times the blocks."""

@@ -50,8 +50,11 @@ def test_targets_are_make_bench_targets() -> None:
     by_what = {row.what: row for row in callgrind_summary.table()}
     assert by_what["toolpath --format jsonl"].target.value == summary.TOOLPATH_TARGET
     assert by_what["verify fanuc / linuxcnc"].target.value == summary.VERIFY_TARGET
-    assert by_what["cycles fanuc->grbl"].target.value == summary.HOLES_TARGET
-    assert by_what["start-up: postproc dialects"].target.value == summary.STARTUP_TARGET_MS
+    assert rows[("cycles fanuc->grbl", "plain loop over its output")].target.value == summary.HOLES_TARGET
+    assert rows[("cycles fanuc->grbl", "gcode-lib parse (its block / our hole)")].target.value == \
+        summary.HOLES_TIMES_GCODE_LIB
+    starts = [row for row in callgrind_summary.table() if row.what == "start-up: postproc dialects"]
+    assert [row.target.value for row in starts] == [summary.STARTUP_TARGET_MS, summary.STARTUP_TIMES_BARE]
 
 
 def test_ratio_and_verdicts() -> None:
@@ -60,10 +63,15 @@ def test_ratio_and_verdicts() -> None:
     assert linuxcnc.ratio(20_000, 30_000) == 1.5 and linuxcnc.verdict(20_000, 30_000) == "PASS"
     assert linuxcnc.verdict(20_001, 30_000) == "MISS"
     assert linuxcnc.verdict(None, 30_000) == "n/a" and linuxcnc.ratio(20_000, None) is None
-    start = by_what["start-up: postproc dialects"]  # times the bare interpreter's instructions
+    rows = {(row.what, row.target.text if row.target else ""): row for row in callgrind_summary.table()}
+    start = rows[("start-up: postproc dialects", "< 120 ms")]  # times the bare interpreter's instructions
     assert start.ratio(400, 100) == 4.0
     assert start.verdict(1, 100) == "n/a"  # < 120 ms is a duration: instructions cannot judge it
-    assert by_what["cycles fanuc->grbl"].verdict(10**9, 1) == "n/a"
+    bare = rows[("start-up: postproc dialects", "<= 5.2x bare")]  # the same restated on the bare start
+    assert bare.verdict(520, 100) == "PASS" and bare.verdict(521, 100) == "MISS"
+    assert rows[("cycles fanuc->grbl", ">= 100,000/s")].verdict(10**9, 1) == "n/a"
+    holes = rows[("cycles fanuc->grbl", ">= 0.32x")]  # gcode-lib's instructions a block over ours a hole
+    assert holes.verdict(100_000, 32_000) == "PASS" and holes.verdict(100_001, 32_000) == "MISS"
     assert by_what["macro WHILE loop fanuc->grbl"].verdict(1, 1) == ""
 
 
