@@ -19,7 +19,8 @@ from .ir import Block
 from .lowering.arcs import ArcOption, RewriteArcs, settle_arc_ends
 from .lowering.lower import lower_for
 from .plugins import Registry, default_registry
-from .reading import gc_paused as gc_paused, read_blocks as read_blocks  # public API names
+from .collector import gc_paused as gc_paused  # public API names
+from .reading import read_blocks as read_blocks
 from .syntaxes.program import HIGHEST_SEQUENCE, RUN_CHECK, TARGET_OMITS_VACANT, ProgramSyntax
 from .lowering.sequences import Sequences
 from .setup.machine_setup import MachineSetup
