@@ -19,8 +19,9 @@ from .ir import Block
 from .lowering.arcs import ArcOption, RewriteArcs, settle_arc_ends
 from .lowering.lower import lower_for
 from .plugins import Registry, default_registry
-from .reading import gc_paused as gc_paused, read_blocks as read_blocks  # public API names
-from .syntaxes.program import HIGHEST_SEQUENCE, RUN_CHECK, TARGET_OMITS_VACANT, ProgramSyntax
+from .collector import gc_paused as gc_paused  # public API names
+from .reading import read_blocks as read_blocks
+from .syntaxes.program import HIGHEST_SEQUENCE, RUN_CHECK, SUBPROGRAM_RULES_KEY, TARGET_OMITS_VACANT, ProgramSyntax
 from .lowering.sequences import Sequences
 from .setup.machine_setup import MachineSetup
 from .ir.source_map import OutputMap
@@ -188,6 +189,8 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context, registry: 
         trial.run_data[POINT_BY_POINT_KEY] = options.active()
         if HIGHEST_SEQUENCE in ctx.run_data:  # the jumps a target numbers itself start above the program's
             trial.run_data[HIGHEST_SEQUENCE] = ctx.run_data[HIGHEST_SEQUENCE]
+        if program is not None:  # (the dry run's steps leave the program step out: its rules come with it)
+            trial.run_data[SUBPROGRAM_RULES_KEY] = program.SUBPROGRAM_RULES
         trial.run_data["dry_run"] = True  # what it writes is a part of the program, read back and discarded
         steps = [step for step in src.pipeline(ctx.setup).steps if not isinstance(step, ProgramSyntax)]
         blocks = Pipeline(src.NAME, steps).run(body, trial)

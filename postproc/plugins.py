@@ -5,11 +5,9 @@ Nothing here names a concrete dialect; built-ins arrive through their entry poin
 
 from __future__ import annotations
 
-import contextlib
 import functools
-import gc
 import types
-from typing import Iterable, Iterator
+from typing import Iterable
 
 import pluggy
 
@@ -17,6 +15,7 @@ from . import native
 native.install()  # the compiled hot path, before any of its modules is imported
 
 from . import hookspecs
+from .collector import gc_paused
 from .interp.control import register_control
 from .dialect import Dialect
 from .entry_points import entry_points as installed_entry_points
@@ -138,14 +137,17 @@ def installed_dialects() -> dict[str, type[Dialect]]:
     other hooks register (the core's syntax objects, cycles, frames and lowering steps: ``core_plugin``)."""
     if default_registry.cache_info().currsize:
         return default_registry().dialects
-    with _collector_paused():
+    with gc_paused():
         return collect_dialects(make_plugin_manager())
 
 
 @functools.cache
 def default_registry() -> Registry:
-    """The registry of every installed plugin, built on first use."""
-    with _collector_paused():
+    """The registry of every installed plugin, built on first use, with the cyclic collector off while the plugins
+    load: they only allocate what lives as long as the registry (modules, classes, tables), and its collections
+    while they did walked everything made before them again (``postproc.commands.command_line.handler`` says what
+    that cost)."""
+    with gc_paused():
         register_sections(DEFAULT)
         register_expressions(DEFAULT)
         register_control(DEFAULT)
@@ -153,17 +155,3 @@ def default_registry() -> Registry:
         for step in registry.lowerings:
             register_transform(step)
     return registry
-
-
-@contextlib.contextmanager
-def _collector_paused() -> Iterator[None]:
-    """The cyclic collector off while the plugins load: they only allocate what lives as long as the registry
-    (modules, classes, tables), and its collections while they did walked everything made before them again
-    (``postproc.commands.command_line.handler`` says what that cost)."""
-    enabled = gc.isenabled()
-    gc.disable()
-    try:
-        yield
-    finally:
-        if enabled:
-            gc.enable()

@@ -1,14 +1,12 @@
-"""Text -> IR: a dialect's reader and its syntax pipeline, as a stream (``read_blocks``), with the cyclic
-garbage collector paused while a program streams (``gc_paused``): blocks hold no reference cycles, and
-measured here the collector's generation scans, not parsing, dominate object-per-block pipelines.
+"""Text -> IR: a dialect's reader and its syntax pipeline, as a stream (``read_blocks``). Its callers pause the
+cyclic garbage collector while a program streams (``postproc.collector.gc_paused``): blocks hold no reference
+cycles, and measured here the collector's generation scans, not parsing, dominate object-per-block pipelines.
 
 Below ``postproc.api`` so that the simulator and the sequences read programs without importing the API.
 """
 
 from __future__ import annotations
 
-import contextlib
-import gc
 from itertools import chain
 from typing import Callable, Iterable, Iterator, Mapping
 
@@ -19,18 +17,6 @@ from .ir import Block
 from .syntaxes.lines import checked_lines
 from .setup.machine_setup import MachineSetup
 from .syntaxes.syntax import Pipeline
-
-
-@contextlib.contextmanager
-def gc_paused() -> Iterator[None]:
-    """Pause the cyclic collector for a streaming run (reference counting still frees every block)."""
-    enabled = gc.isenabled()
-    gc.disable()
-    try:
-        yield
-    finally:
-        if enabled:
-            gc.enable()
 
 
 def read_blocks(lines: Iterable[str], file: str, dialect: type[Dialect], setup: MachineSetup,

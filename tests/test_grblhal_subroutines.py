@@ -159,6 +159,27 @@ def test_a_sub_that_calls_itself_is_read_and_runs_with_its_inherited_argument() 
     assert "o100 call" in text and warnings == [] and _moves(text, "grblhal") == _moves(recursive, "linuxcnc")
 
 
+def test_the_sources_bound_of_nested_calls_comes_from_the_run_not_the_default_registry(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    """The writer reads the source's bound of nested calls (rs274's 9, which keeps the sub above as o-words) from
+    the run's own interpreter step (``SUBPROGRAM_RULES_KEY``), in the run and in its dry run alike: a translation
+    given its own registry works with the global one out of reach."""
+    import postproc.plugins
+    registry = postproc.plugins.default_registry()
+
+    def unreachable() -> None:
+        raise AssertionError("the global registry was asked")
+
+    monkeypatch.setattr(postproc.plugins, "default_registry", unreachable)
+    recursive = ("G21 G17 G90\n#1=3\no100 sub\n#1=[#1-1]\nG1 X#1 F100\no101 if [#1 GT 0]\no100 call\n"
+                 "o101 endif\no100 endsub\no100 call\nM2\n")
+    out = io.StringIO(newline="")
+    diagnostics = Diagnostics(ErrorLevel.RAISE, warn_stream=io.StringIO())
+    translate(io.StringIO(recursive, newline=""), out, file="t.ngc", source="linuxcnc", target="grblhal",
+              setup=EXPRESSIONS, diagnostics=diagnostics, registry=registry)
+    assert "o100 call" in out.getvalue() and diagnostics.warnings == []
+
+
 @pytest.mark.parametrize("program, message", [
     ("G21\no100 sub\nG0 X#30\no100 endsub\no100 call" + " [1]" * 29 + "\nM2\n",
      "t.gcode:5:1: error: a grblHAL call with 29 arguments leaves #30 unset"),

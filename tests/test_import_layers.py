@@ -27,9 +27,10 @@ from tests.support.import_graph import Graph, arrows_not_down, find_circle, impo
 ROOT = Path(__file__).resolve().parents[1]
 
 LAYERS: tuple[tuple[str, tuple[str, ...], str], ...] = (
-    ("ground", ("records", "errors", "xmlio", "numbers", "cycle_words", "native", "version", "entry_points"),
-     "records, errors and XML, number text, the hole-cycle word record, build and entry-point facts: the "
-     "standard library only"),
+    ("ground", ("records", "errors", "xmlio", "numbers", "cycle_words", "native", "version", "entry_points",
+                "collector"),
+     "records, errors and XML, number text, the hole-cycle word record, build and entry-point facts, the "
+     "collector's pause: the standard library only"),
     ("model", ("ir", "setup", "geometry", "interp", "compensation", "context", "block_rules"),
      "the neutral IR, the machine set-up, and the neutral computations over them (geometry, expressions and "
      "variables, tool compensation, one run's context): the ground"),

@@ -12,8 +12,10 @@ from typing import Any
 
 import pytest
 
-from postproc.api import translate
+from postproc.api import read_program, translate
+from postproc.compensation.tool_table import ToolTable
 from postproc.errors import Diagnostics, ErrorList, PostprocError
+from postproc.ir import DataSetting
 from postproc.setup.machine import ToolData
 from tests.support.nose_tips import controlled, one_tool
 from tests.test_fanuc_nose import CYCLE, PROFILE, R, _expected
@@ -120,3 +122,30 @@ def test_incremental_mode_is_refused_by_name() -> None:
     with pytest.raises(PostprocError) as err:
         controlled(text, "fanuc", setup, "t.nc")
     assert "t.nc:3:5: error: G10 P10002 in incremental mode: whether X, Z and R" in str(err.value)
+
+
+def test_the_setting_holds_the_offset_by_meaning_not_by_the_letters() -> None:
+    """The family base reads Fanuc T's letters (X, U, Z, W, R, C, Q); the neutral setting carries what they mean
+    (``postproc.compensation.tool_table.LATHE_VALUES``, ``LATHE_TIP``), so the core's tool table names no family's
+    letter. U and C add to X and R, W to Z."""
+    text = "O0001\nG21 G18 G98\nG10 P10002 X4. W-1.5 C0.2 Q3\nG10 P2 U0.2 Z-0.1 R0.1\nM30\n"
+    settings = [block.sections["DataSetting"] for block in read_program(io.StringIO(text), file="t.nc",
+                                                                          dialect="fanuc", setup=_bare())
+                if "DataSetting" in block.sections]
+    assert [(s.table, s.index, s.values) for s in settings] == [  # type: ignore[attr-defined]
+        ("lathe_offset", 2, {"x": 4.0, "z_increment": -1.5, "radius_increment": 0.2, "tip": 3.0}),
+        ("lathe_offset_wear", 2, {"x_increment": 0.2, "z": -0.1, "radius": 0.1})]
+
+
+def test_the_tool_table_reads_the_neutral_keys() -> None:
+    """Geometry X4 Z-1.5 R0.5 tip 3, then +0.2 on X and R; wear X0.2 Z-0.1: offset 2 is (4.4/2, -1.6) on a
+    diameter lathe, radius 0.7, tip 3 (``ToolTable.write``, by hand)."""
+    table = ToolTable(_bare())
+    for table_name, values in (("lathe_offset", {"x": 4.0, "z": -1.5, "radius": 0.5, "tip": 3.0}),
+                               ("lathe_offset", {"x_increment": 0.2, "radius_increment": 0.2}),
+                               ("lathe_offset_wear", {"x": 0.2, "z": -0.1})):
+        assert table.write(DataSetting("any", table_name, 2, dict(values), False, ""), 1.0)
+    lathe = table.lathe(2, diameter=True)
+    assert lathe is not None and lathe == pytest.approx((2.2, -1.6))
+    assert table.radius(2) == pytest.approx(0.7)
+    assert table.tip(2) == 3

@@ -295,6 +295,44 @@ def test_a_control_statement_in_a_profile_kept_as_written_is_refused() -> None:
     assert "prog.ngc:11:" in str(err.value) and "profile, line 4" in str(err.value)
 
 
+
+COMPUTED = [("#<_d>=1\n", "G1 X[2+#<_d>] Z-2", 3.0), ("#31=1\n", "G1 X[2+#31] Z-2", 3.0),
+            ("#1=1\n", "G1 X[2+#1] Z-2", 2.0), ("", "G1 X[#<_x>+1] Z-2", 2.0), ("", "G[1] X3 Z-2", 3.0)]
+"""A profile's second block with a computed word: reading a global parameter (named, numbered), a local one (the
+profile's own call's, 0: ``test_a_local_parameter_in_a_profile_is_the_profiles_own``), the current position (the
+profile's point, X1 after its first block), or giving the G code; and the X it reaches where the program runs."""
+
+
+def _computed_program(before: str, line: str) -> str:
+    return f"G18 G8 F100\nO100 SUB\nG1 X1 Z0\n{line}\nG1 X6 Z-4\nO100 ENDSUB\n{before}G0 X6 Z1\nG70 Q100 X6 Z1\nM2\n"
+
+
+@pytest.mark.parametrize("before, line, x", COMPUTED)
+def test_a_computed_profile_word_of_a_program_kept_as_written_is_refused_whatever_it_reads(
+        before: str, line: str, x: float) -> None:
+    """A program kept as written (to LinuxCNC) is not run, so no parameter has a value where the cycle would read
+    the profile: every computed word is refused, global parameters' too, and the message says so (it named only a
+    local parameter or the G code, which misled for a global one); located at the cycle, naming the profile's line."""
+    text = _computed_program(before, line)
+    word = line.split()[0] if line.startswith("G[") else line.split()[1]
+    with pytest.raises((PostprocError, ErrorList)) as err:
+        translate(io.StringIO(text), io.StringIO(), file="prog.ngc", source="linuxcnc", target="linuxcnc",
+                  setup=RADIUS)
+    assert (f"G70's profile, line 4: {word}: a computed word in a G70-G72 profile of a program kept as written is "
+            "not modelled") in str(err.value)
+    assert f"prog.ngc:{8 + before.count(chr(10))}:" in str(err.value)
+
+
+@pytest.mark.parametrize("before, line, x", COMPUTED)
+def test_a_computed_profile_word_of_a_program_that_runs_is_read(before: str, line: str, x: float) -> None:
+    """The same programs run (the simulation, a translation to Fanuc): the profile runs with them, each computed
+    word taking its value where the cycle reads it (one finishing pass: to X1 Z0, then X``x`` Z-2, then X6 Z-4)."""
+    moves = [(m["move"], float(m["x"]), float(m["z"])) for m in simulated(_computed_program(before, line))]
+    assert [(k, pytest.approx(mx), pytest.approx(mz)) for k, mx, mz in moves[-3:]] == [
+        ("rapid", 1.0, 0.0), ("feed", x, -2.0), ("feed", 6.0, -4.0)]
+    translate(io.StringIO(_computed_program(before, line)), io.StringIO(), file="prog.ngc", source="linuxcnc",
+              target="fanuc", setup=RADIUS)
+
 LOCAL = "G18 G8 F100\nO100 SUB\nG1 X1 Z0\nG1 X[2+#1] Z-4\nG1 X6\nO100 ENDSUB\n#1=1.5\nG0 X6 Z1\nG70 Q100 X6 Z1\nM2\n"
 
 

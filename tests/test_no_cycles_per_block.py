@@ -1,4 +1,4 @@
-"""A translation streams in bounded memory with the cyclic collector paused (``postproc.reading.gc_paused``):
+"""A translation streams in bounded memory with the cyclic collector paused (``postproc.collector.gc_paused``):
 that holds only if no block is caught in a reference cycle, which reference counting cannot free. A hole
 cycle's lazy expansion once held the block that held it: memory grew with every drilling block (RSS +8 MB
 per 900k CAM blocks). Counted here as the garbage the collector finds after a run: the same for 20 cycle

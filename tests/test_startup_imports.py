@@ -357,7 +357,7 @@ line, then the modules loaded (the probe sees the run)."""
 def test_a_short_run_makes_the_collector_walk_nothing(tmp_path: Path, one_line: Path, args: tuple[str, ...]) -> None:
     """A one-line translation and ``postproc dialects`` load their command's modules, the plugins and the dialects'
     readers, writers and steps with the cyclic collector paused, and freeze what they made
-    (``postproc.commands.command_line.collector_paused``, ``postproc.plugins``, ``postproc.api.translate``): no
+    (``postproc.commands.command_line.FREEZE_IMPORTS``, ``postproc.plugins``, ``postproc.api.translate``): no
     collection runs before the exit's. With the collector on while they loaded, 33 ran in a one-line
     translation (each walking every object the imports had made so far) and 14 in ``postproc dialects``."""
     out = tmp_path / "collections.txt"

@@ -8,15 +8,14 @@ parser imports none of them, so ``postproc dialects`` and ``--version`` do not l
 from __future__ import annotations
 
 import argparse
-import contextlib
-import gc
 import importlib
 import math
 import os
 import sys
-from typing import TYPE_CHECKING, Callable, Iterator
+from typing import TYPE_CHECKING, Callable
 
 from .. import native
+from ..collector import gc_paused
 
 if TYPE_CHECKING:  # imported by the checks that use them (see the module docstring)
     from ..lowering.arcs import ArcOption
@@ -30,34 +29,22 @@ HANDLERS = {"translate": "handlers:cmd_translate", "toolpath": "handlers:cmd_too
 
 FREEZE_IMPORTS = False
 """Set by the command's own process (``postproc.commands.launch``): what a command's modules and its one run make
-while the collector is paused (``collector_paused``) is frozen (``gc.freeze``) as the process goes on, as what the
-command line's imports made is there; a program that calls ``main`` keeps its collector as it is."""
+while the collector is paused (``gc_paused(freeze=FREEZE_IMPORTS)``) is frozen (``gc.freeze``) as the process goes
+on, as what the command line's imports made is there; a program that calls ``main`` keeps its collector as it is.
 
-
-@contextlib.contextmanager
-def collector_paused() -> Iterator[None]:
-    """The cyclic collector off while a command's modules load and its one run (a single translation, the
-    dialect table) goes: the imports only allocate (classes, functions, tables that live as long as the
-    process), and its collections while they did (37 in a one-line translation, each walking what had been
-    made so far; one more as the run ended, walking everything) cost it 3.4 % of its instructions
-    (callgrind, compiled build). In the command's process what was made is frozen at the end (the process
-    exits next, or goes on with its own collections walking only what it makes from then on)."""
-    enabled = gc.isenabled()
-    gc.disable()
-    try:
-        yield
-    finally:
-        if FREEZE_IMPORTS:
-            gc.freeze()
-        if enabled:
-            gc.enable()
+The collector is off while a command's modules load and its one run (a single translation, the dialect table)
+goes: the imports only allocate (classes, functions, tables that live as long as the process), and its
+collections while they did (37 in a one-line translation, each walking what had been made so far; one more as
+the run ended, walking everything) cost it 3.4 % of its instructions (callgrind, compiled build). In the
+command's process what was made is frozen at the end (the process exits next, or goes on with its own
+collections walking only what it makes from then on)."""
 
 
 def handler(command: str) -> Callable[[argparse.Namespace], int]:
     """The function that runs ``command`` (a key of ``HANDLERS``), its module imported now
-    (``collector_paused``)."""
+    (``FREEZE_IMPORTS`` says why the collector is paused)."""
     module, _, name = HANDLERS[command].partition(":")
-    with collector_paused():
+    with gc_paused(freeze=FREEZE_IMPORTS):
         found: Callable[[argparse.Namespace], int] = getattr(importlib.import_module(f"{__package__}.{module}"),
                                                              name)
     return found

@@ -14,13 +14,14 @@ from typing import Any, Mapping
 
 from ..dialect import Dialect, Lazy
 from ..plugins import installed_dialects
-from .command_line import collector_paused
+from . import command_line
+from ..collector import gc_paused
 
 
 
 def cmd_dialects(args: argparse.Namespace) -> int:
     """``postproc dialects [--format table|json]``."""
-    with collector_paused():  # the plugins load (``command_line.collector_paused``)
+    with gc_paused(freeze=command_line.FREEZE_IMPORTS):  # the plugins load (``command_line.FREEZE_IMPORTS``)
         info = dialect_info(installed_dialects())
     if args.format == "json":
         import json

@@ -12,7 +12,7 @@ from ..dialect import Dialect
 from ..drawing.backplot import Backplot
 from ..simulate.event_text import EventValueError, write_lines
 from ..simulate.move_record import MoveRecord, as_events
-from ..reading import gc_paused
+from ..collector import gc_paused
 from ..simulate.toolpath import Event, start_position, toolpath_stream
 
 

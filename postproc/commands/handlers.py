@@ -18,7 +18,8 @@ from ..output.outfile import BUFFER, ENCODING, write_output
 from ..plugins import default_registry
 from ..setup.machine_setup import MachineSetup, check_named_file, load_setup
 from ..xmlio import parse_xml_file, to_bytes
-from .command_line import collector_paused
+from . import command_line
+from ..collector import gc_paused
 from .progress import AboveProgress, progress_for
 
 
@@ -97,7 +98,7 @@ def cmd_translate(args: argparse.Namespace) -> int:
         if args.tolerance is None:
             args.tolerance = 0.001
         return run_batch(args, renumber)
-    with collector_paused():  # one program: its run and the modules it loads (``command_line.collector_paused``)
+    with gc_paused(freeze=command_line.FREEZE_IMPORTS):  # one program: its run and the modules it loads
         return _translate_one(args, renumber)
 
 

@@ -32,7 +32,8 @@ from ..geometry.arcs import CENTRE_KEYS, PLANE_INDEX, arc_sweep
 from ..ir import Block
 from ..lowering.lower import Lowering, lower_for
 from ..plugins import Registry, default_registry
-from ..reading import gc_paused, read_blocks
+from ..collector import gc_paused
+from ..reading import read_blocks
 from ..setup.machine import ROTARY_AXES
 from ..setup.machine_setup import MachineSetup
 from ..simulate.move_record import Emitted, as_event

@@ -22,10 +22,14 @@ ENTRY = "tool_entry"
 SIDEWAYS = ("X", "Y")
 """The entry's offsets across the spindle axis (``ToolTable.sideways``)."""
 LATHE_TABLES = {"lathe_offset": False, "lathe_offset_wear": True}
-"""A lathe tool offset's geometry or wear (Fanuc T ``G10 P X Z R Q``, ``postproc.rs274.lathe_offset_input``) ->
-whether it is the wear: X, Z and R (the nose radius) set, U, W and C add to them, Q sets the offset's
-imaginary tool nose direction."""
-_LATHE_WORDS = (("X", "U", "x"), ("Z", "W", "z"), ("R", "C", "radius"))
+"""A lathe tool offset's geometry or wear (a family base reads the program's form, as ``postproc.rs274.
+lathe_offset_input`` Fanuc T's ``G10 P X Z R Q``) -> whether it is the wear. Its values are keyed by meaning
+(``LATHE_VALUES``, ``LATHE_TIP``), not by a family's letters."""
+LATHE_VALUES = (("x", "x_increment"), ("z", "z_increment"), ("radius", "radius_increment"))
+"""A lathe offset setting's value keys: (the key that sets the quantity, the key that adds to it), the quantity
+the first (X as the set-up's ``<Tool x>`` reads it, Z, the tool nose radius), in program units."""
+LATHE_TIP = "tip"
+"""A lathe offset setting's value key that sets the offset's imaginary tool nose direction (``ToolTable.tip``)."""
 
 
 class ToolTable:
@@ -99,9 +103,9 @@ class ToolTable:
         wear = LATHE_TABLES[setting.table]
         register = setting.index
         store = self.wear if wear else self.written
-        for absolute, increment, quantity in _LATHE_WORDS:
+        for quantity, increment in LATHE_VALUES:
             key = (quantity, register)
-            value = setting.values.get(absolute)
+            value = setting.values.get(quantity)
             if isinstance(value, (int, float)):
                 store[key] = value * scale
             step = setting.values.get(increment)
@@ -110,7 +114,7 @@ class ToolTable:
                 if known is None:
                     known = self._declared_wear(quantity, register) if wear else self._declared(quantity, register)
                 store[key] = (known or 0.0) + step * scale
-        tip = setting.values.get("Q")
+        tip = setting.values.get(LATHE_TIP)
         if isinstance(tip, (int, float)):
             self.tips[register] = int(tip)
 

@@ -20,7 +20,7 @@ from ..ir.expr import Expr
 from ..ir import Block, Feed, Motion, Sequence
 from ..numbers import decimal_value
 from ..rs274.block_syntax import AXIS_LETTERS, CENTER_AXIS, WordBlockSyntax
-from ..rs274.lathe_block_syntax import SINGLE_KEY
+from ..rs274.lathe_block_syntax import ONE_AXIS_WORDS, SINGLE_KEY
 from ..rs274.point_mix import point_mix
 
 _UPPER: Final = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
@@ -153,17 +153,12 @@ class PlainLatheLane(PlainLane):
     def read(self, block: Block, ctx: Context, words: list[tuple[str, str]]) -> bool:
         if SINGLE_KEY in ctx.state.extra:
             return False  # a bare X/Z repeats the single cycle: the general path decides
-        x = z = u = w = False
-        for letter, _ in words:
-            up = _UPPER.get(letter, letter)
-            if up == "J":
-                return False  # an arc centre off the ZX plane: ``LatheBlockSyntax.g_sections`` refuses it
-            x = x or up == "X"
-            z = z or up == "Z"
-            u = u or up == "U"
-            w = w or up == "W"
-        if x and u or z and w:
-            return False  # the absolute and the incremental word of one axis: ``g_sections`` refuses it
+        letters = {_UPPER.get(letter, letter) for letter, _ in words}
+        if "J" in letters:
+            return False  # an arc centre off the ZX plane: ``LatheBlockSyntax.g_sections`` refuses it
+        for absolute, increment in ONE_AXIS_WORDS:
+            if absolute in letters and increment in letters:
+                return False  # the absolute and the incremental word of one axis: ``g_sections`` refuses it
         return super().read(block, ctx, words)
 
 

@@ -25,10 +25,14 @@ from postproc.context import Context
 
 from .block_syntax import WordBlockSyntax, col_of_word
 from .codes import g_key
+from .lathe_axes import LATHE_INCREMENTS
 
 SINGLE_KEY = "LatheBlockSyntax.single"
 """``ctx.state.extra`` key: (kind, code as written) of the single cycle in force, or absent."""
 CYCLE_AXES = frozenset("XZUW")
+ONE_AXIS_WORDS = tuple((axis, increment) for increment, axis in LATHE_INCREMENTS.items())
+"""(absolute, incremental) address of one axis (X and U, Z and W): refused together in one block (``g_sections``,
+and the plain-block lane that leaves such a block to it, ``postproc.fast.plain.PlainLatheLane``)."""
 _UPPER = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
 
 
@@ -121,7 +125,7 @@ class LatheBlockSyntax(WordBlockSyntax):
             and "X" not in values and "P" not in values
         if dwell_u:
             values["X"] = values.pop("U")  # a lathe's G04 U is the dwell in seconds, as G04 X
-        for absolute, increment in (("X", "U"), ("Z", "W")):
+        for absolute, increment in ONE_AXIS_WORDS:
             if absolute in values and increment in values:
                 raise ProgramError(f"{absolute} and {increment} in one block: the absolute and the incremental "
                                    f"{absolute} of one move", ctx.at(block, ctx.column_of(block, increment)))

@@ -25,6 +25,7 @@ from __future__ import annotations
 
 from typing import Any, Final
 
+from postproc.compensation.tool_table import LATHE_TIP, LATHE_VALUES
 from postproc.context import Context
 from postproc.errors import ProgramError, UnsupportedError
 from postproc.ir.expr import Expr
@@ -36,6 +37,10 @@ WEAR: Final = "lathe_offset_wear"
 """Neutral table: a lathe tool offset's wear (X, Z, R; U, W, C its increments; Q the offset's direction)."""
 LETTERS: Final = frozenset("XZRUWCQ")
 _PAIRS: Final = (("X", "U"), ("Z", "W"), ("R", "C"))
+"""Each quantity's letter that sets it and the letter that adds to it, in the order of ``LATHE_VALUES``."""
+MEANING: Final = {"Q": LATHE_TIP, **{letter: key for pair, keys in zip(_PAIRS, LATHE_VALUES)
+                                     for letter, key in zip(pair, keys)}}
+"""Letter -> the neutral key its value goes under in the setting (``postproc.compensation.tool_table``)."""
 _ALLOWED: Final = LETTERS | {"P", "N", "O"}
 
 
@@ -97,4 +102,4 @@ def lathe_offset_setting(block: Block, ctx: Context, number: str, values: dict[s
     keep = {"P", *data}
     text = " ".join(letter + num for letter, num in block.words
                     if letter_of.get(letter) in keep or letter_of.get(letter) == "G" and num == number)
-    return DataSetting(family, table, index, data, False, text)
+    return DataSetting(family, table, index, {MEANING[letter]: value for letter, value in data.items()}, False, text)

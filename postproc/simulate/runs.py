@@ -209,12 +209,7 @@ class Normaliser:
                 if record_keys is not self.seen_keys:
                     self.seen_keys, self.all_axes = record_keys, _all_axes(record_keys)
                 if item.centre is not None and (kind == "cw" or kind == "ccw"):  # an arc
-                    m = _arc_record(item, self.all_axes, self.pos_keys, self.pos_values)
-                    self.pos_keys, self.pos_values, self.pos3 = m.end_keys, m.end_values, False
-                    run = self.run
-                    if run is not None and _merge(run, m, eps):
-                        continue
-                    self.run, self.run3 = m, False
+                    run = self._arc_run(_arc_record(item, self.all_axes, self.pos_keys, self.pos_values), eps)
                     if run is not None:
                         return run
                     continue
@@ -239,12 +234,7 @@ class Normaliser:
                     return ev
                 kind = ev["move"]
                 if kind == "cw" or kind == "ccw":
-                    m = _arc(ev, self.pos_keys, self.pos_values)
-                    self.pos_keys, self.pos_values, self.pos3 = m.end_keys, m.end_values, False
-                    run = self.run
-                    if run is not None and _merge(run, m, eps):
-                        continue
-                    self.run, self.run3 = m, False
+                    run = self._arc_run(_arc(ev, self.pos_keys, self.pos_values), eps)
                     if run is not None:
                         return run
                     continue
@@ -340,6 +330,17 @@ class Normaliser:
                 self.u2 = d2 / length
             if run is not None:
                 return run
+
+    def _arc_run(self, m: Move, eps: float) -> Move | None:
+        """An arc read (from a record or an event, ``pull``): the tool goes to its end; it joins the run where it
+        continues it (None), else it starts a run of its own and the run it ends is given (None where there was
+        none)."""
+        self.pos_keys, self.pos_values, self.pos3 = m.end_keys, m.end_values, False
+        run = self.run
+        if run is not None and _merge(run, m, eps):
+            return None
+        self.run, self.run3 = m, False
+        return run
 
     def _place(self, keys: Keys, end: list[float], three: bool, e0: float, e1: float, e2: float) -> None:
         """The tool stands at ``end`` (``pos_keys``, ``pos_values``); a point of three axes in the records' keys

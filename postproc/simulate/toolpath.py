@@ -48,7 +48,8 @@ from ..frames.measured_entries import write_measured_entries
 from ..lowering.sideways_offsets import write_sideways_offsets
 from ..lowering.tool_entries import write_tool_entries
 from ..plugins import Registry, default_registry
-from ..reading import gc_paused, macro_arguments, read_blocks
+from ..collector import gc_paused
+from ..reading import macro_arguments, read_blocks
 from ..setup.machine_setup import MachineSetup
 from ..cycles.rigid_tap_lowering import resolve_rigid_taps
 from ..lowering.deferred import resolve_dynamic_cutter_compensation
@@ -133,7 +134,7 @@ def toolpath_stream(lines: Iterable[str], *, file: str, dialect: str | type[Dial
     """``toolpath_events`` without its checks: the simulator's own (compiled) event stream, read and lowered
     as it is pulled, with no Python generator around it (``verify`` pulls every event of two programs: a
     Python ``yield from`` cost about 1,500 instructions an event there). The caller checks ``diagnostics``
-    at the end and pauses the cyclic collector for the run (``postproc.reading.gc_paused``). The reading
+    at the end and pauses the cyclic collector for the run (``postproc.collector.gc_paused``). The reading
     starts here, not at the first event. ``records``: a straight move comes as a ``MoveRecord`` (read by the
     JSON lines writer and verify's normalising; ``as_events`` gives any other reader the dictionaries), else
     every event as its dictionary. ``tool_data`` receives the changes of the tool data in force

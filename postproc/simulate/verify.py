@@ -32,7 +32,7 @@ from .normal_move import Move
 from .move_record import MoveRecord, as_events
 from .compare import (Report, _controlled, compare, compare_after_end, compare_settings, describe,
                       normalise)
-from ..reading import gc_paused
+from ..collector import gc_paused
 from .events import Event
 from .lost_tool_data import lost_tool_data
 from .toolpath import start_position, toolpath_events, toolpath_stream

@@ -49,6 +49,10 @@ HIGHEST_SEQUENCE = "highest_sequence"
 """``ctx.run_data`` key: the highest block number of a program kept symbolically (``ProgramSyntax``, when it
 decides to keep it): a target that spells a construct as jumps to block numbers of its own (Fanuc's
 ``IF .. ELSE``, ``postproc.rs274.macro_jumps``) numbers them above it, so they never meet the program's."""
+SUBPROGRAM_RULES_KEY = "subprogram_rules"
+"""``ctx.run_data`` key: the reading dialect's ``SubprogramRules`` (its interpreter step's ``SUBPROGRAM_RULES``), set as
+the step starts a run, so that a later step or the writer reads the source's rules from the run itself (grblHAL's
+writer its bound of nested calls) and not from a registry."""
 ARGUMENTS_KEY = "macro_arguments"
 """``ctx.run_data`` key of the locals a program run on its own starts with (``--arg A=30``: {1: 30.0})."""
 """What the step keeps of a streamed block, for a backward jump (``ProgramSyntax._reread``): its text
@@ -161,6 +165,7 @@ class ProgramSyntax(Syntax):
         """Every mode checks the program's structure and expressions as it streams
         (``postproc.interp.structure``): a program kept symbolically is refused where its run would be
         (an unclosed loop, a subprogram defined twice, ``SQRT[-4]``)."""
+        ctx.run_data[SUBPROGRAM_RULES_KEY] = self.SUBPROGRAM_RULES
         if ctx.program_mode == "keep":
             return self._checked(iter(blocks), ctx)
         return self._execute(iter(blocks), ctx)

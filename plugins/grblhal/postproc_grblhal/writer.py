@@ -49,6 +49,7 @@ from postproc.ir import Block, Motion
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.expressions import ExprSpelling
 from postproc.rs274.oword import spell_assignments, spell_oword
+from postproc.syntaxes.program import SUBPROGRAM_RULES_KEY
 
 from .cancels import GROUP_01
 from .codes import CODES
@@ -56,6 +57,7 @@ from .program import FLOW_STACK, GRBLHAL_SPELLING, GrblhalProgramSyntax
 from .subprograms import CONVERTED
 
 if TYPE_CHECKING:
+    from postproc.interp.rules import SubprogramRules
     from postproc.interp.structure import Structure
 
 _FLOW = (If, ElseIf, Else, EndIf, While, EndWhile, Do, DoWhile, Repeat, EndRepeat, Break, Continue, SubStart, SubEnd,
@@ -192,13 +194,10 @@ class GrblhalWriter(GrblFamilyWriter):
         flow.uses[name] = flow.uses.get(name, 0) + extra
 
     def source_call_levels(self) -> int | None:
-        """The source controller's bound of nested calls (``SubprogramRules.call_levels``)."""
-        from postproc.plugins import default_registry
-        from postproc.syntaxes.program import ProgramSyntax
-        for step in default_registry().dialect(self.source_dialect).pipeline(self.ctx.setup).steps:
-            if isinstance(step, ProgramSyntax):
-                return step.SUBPROGRAM_RULES.call_levels
-        return None
+        """The source controller's bound of nested calls (``SubprogramRules.call_levels``), as the run's interpreter
+        step gave it (``SUBPROGRAM_RULES_KEY``); None where the run has none (a source that runs no program)."""
+        rules: SubprogramRules | None = self.ctx.run_data.get(SUBPROGRAM_RULES_KEY)
+        return None if rules is None else rules.call_levels
 
     def call_words(self, call: Call, block: Block) -> str:
         """``o<n> call [..]`` after its sub's definition; from LinuxCNC with its 30 arguments (module docstring), but

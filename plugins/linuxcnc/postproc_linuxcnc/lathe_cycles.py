@@ -17,9 +17,9 @@ than ZX, I not above 0, G71/G72 under cutter compensation, a profile arc given b
 both, a profile not monotonic. Where the program runs (``RUN_INTERPRETER_KEY``), the profile is run as LinuxCNC
 runs it, as a call from the cycle through its o-word loops, branches, calls and parameter assignments, its words
 evaluated with the parameters' values then (``_run_profile``; a read of the current position reads the profile's own
-point). In a program kept as written (not run), its words alone are read, computed ones from global parameters
-(``_evaluated``). Not modelled, so refused (``UnsupportedError``): in a program kept as written, a profile word
-computed from a local parameter (or a computed G code) and a control statement or parameter assignment in a
+point). In a program kept as written (not run), its words alone are read (``_kept_words``). Not modelled, so
+refused (``UnsupportedError``): in a program kept as written, any computed word in a profile (what it reads has no
+value without the program's run) and a control statement or parameter assignment in a
 profile (read past before issue 26: a loop's moves were taken once); a profile with any word but those (a feed or
 speed is ignored there: said rather than dropped), a subprogram not
 defined before the cycle, the cycle in incremental mode (G91), a P of G70 that is no whole number from 1,
@@ -38,7 +38,7 @@ from postproc.context import Context
 from postproc.interp.control import ASSIGN, SubEnd, SubStart
 from postproc.cycles.turning.profile import TurnMove
 from postproc.errors import Location, PostprocError, ProgramError, UnsupportedError
-from postproc.ir.expr import Binary, Expr, Func, Num, Unary, Var
+from postproc.ir.expr import Expr
 from postproc.interp.variables import RUN_INTERPRETER_KEY, RUN_VARIABLES_KEY
 from postproc.ir import Block, Motion, NativeCode
 from postproc.rs274.arc_ends import RS274NGC_ARC_END
@@ -293,7 +293,7 @@ def _run_profile(running: Any, label: str, block: Block, ctx: Context, name: str
     parameter settings at each block read, until the call level is back to the cycle's; rs274 2.9.0~pre1 run
     here cuts ``nc_files/lathe_g7x_face_boring.ngc``'s ``REPEAT [3]`` three times, tests/test_ngc_g7x.py]. A read
     of the current position (``#<_x>``, ``#5420``..) reads the profile's own point (``point``, which ``_profile``
-    moves on before the next block is read: ``_evaluated``). A fillet or chamfer block, whose words travel
+    moves on before the next block is read: ``_profile_readings``). A fillet or chamfer block, whose words travel
     inert (``ProfileCollector``), gives its words as written, evaluated here. An error of the run is located at
     the cycle's Q and names the profile's line."""
     from postproc.interp.evaluation import evaluate_number  # (the interpreter's modules: a profile's cost only)
@@ -331,8 +331,11 @@ def _run_profile(running: Any, label: str, block: Block, ctx: Context, name: str
 
 class _profile_readings:
     """While a profile is read: the current position (``#<_x>``, ``#<_z>``, #5420, #5422) reads the profile's
-    own ``point`` (in program units, X a radius), the other axes and offsets as the machine stands
-    (``FrameReadings``); ``_evaluated`` gives the source."""
+    own ``point`` (in program units, X a radius): where the profile's moves so far end, from the cycle's X and Z
+    [V: rs274 2.9.0~pre1 run here: a profile's first ``X[#<_x>-5] Z[#<_z>-1]`` after ``G0 X40 Z5`` and ``G72 .. X30
+    Z2`` ends at X25 Z1; under G7 with the cycle's X60 ``X[#<_x>-10]`` ends at the radius 10 (``#<_x>`` reads the
+    radius 30); LinuxCNC's ``nc_files/lathe_g7x_face_boring.ngc`` steps its profile by ``#<_x>``,
+    tests/test_ngc_g7x.py]. The other axes and offsets read as the machine stands (``FrameReadings``)."""
 
     def __init__(self, ctx: Context, variables: Any, point: dict[str, float]) -> None:
         self.ctx, self.variables, self.point = ctx, variables, point
@@ -367,65 +370,29 @@ class _profile_readings:
             self.variables.frames = self.saved
 
 
-def _evaluated(words: list[tuple[str, str]], values: dict[str, Any], ctx: Context,
-               unmodelled: Callable[[str], UnsupportedError], point: dict[str, float]) -> list[tuple[str, str]]:
-    """A profile block's words with its computed ones evaluated where the cycle runs: LinuxCNC reads the
-    subprogram then, so its expressions take the parameters' values at the cycle, not at the definition [V:
-    rs274 2.9.0~pre1: a global parameter set between the ``o100 sub`` and the ``G71 Q100`` shifts the cut by its
-    new value, tests/test_ngc_g7x.py]. Global parameters only (named with a leading ``_``, numbered above 30 [K:
-    LinuxCNC o-code docs: #1-#30 belong to a subprogram's call]) and numbers; a local one belongs to the
-    subprogram's own call level, which this reading does not keep: refused, as a computed G code.
+def _kept_words(words: list[tuple[str, str]], values: dict[str, Any],
+                unmodelled: Callable[[str], UnsupportedError]) -> list[tuple[str, str]]:
+    """A profile block's words in a program kept as written (not run here: no ``RUN_INTERPRETER_KEY``): numbers
+    only. A computed word, whatever it reads (a global or a local parameter, the current position) or gives (the
+    G code), is refused: LinuxCNC evaluates it as it reads the profile where the cycle runs [V: rs274 2.9.0~pre1,
+    a global parameter set between the ``o100 sub`` and the ``G71 Q100`` shifts the cut by its new value,
+    tests/test_ngc_g7x.py], and without the program's run no parameter has a value here. Where the program runs,
+    the profile is run with it (``_run_profile``) and nothing comes here."""
+    from postproc.interp.run_state import is_number  # (the interpreter's modules: a profile's cost only)
 
-    The current position (``#<_x>``, ``#<_z>``, #5420, #5422) read there is the profile's own point (``point``, in
-    program units, X a radius): where the profile's moves so far end, from the cycle's X and Z [V: rs274
-    2.9.0~pre1 run here: a profile's first ``X[#<_x>-5] Z[#<_z>-1]`` after ``G0 X40 Z5`` and ``G72 .. X30 Z2`` ends
-    at X25 Z1; under G7 with the cycle's X60 ``X[#<_x>-10]`` ends at the radius 10 (``#<_x>`` reads the radius
-    30); LinuxCNC's ``nc_files/lathe_g7x_face_boring.ngc`` steps its profile by ``#<_x>``, tests/test_ngc_g7x.py].
-    The other axes read as the machine stands (``FrameReadings``)."""
-    from postproc.interp.evaluation import evaluate_number  # (the interpreter's modules: ``_profile_readings``)
-    from postproc.interp.run_state import is_number
-
-    variables = ctx.run_data.get(RUN_VARIABLES_KEY)
-    out: list[tuple[str, str]] = []
     for letter, text in words:
-        value = values.get(letter.upper())
-        if not isinstance(value, Expr) or is_number(text):
-            out.append((letter, text))
-            continue
-        if variables is None or letter.upper() == "G" or not _global(value):
-            raise unmodelled(f"{letter}{text}: a computed word in a G70-G72 profile reading a local parameter or "
-                             "giving the G code is not supported (write the numbers, or use global parameters)")
-        try:
-            with _profile_readings(ctx, variables, point):
-                number = evaluate_number(value, variables, f"{letter}{text}")
-        except PostprocError as err:
-            raise unmodelled(f"{letter}{text}: {err.message}") from None
-        out.append((letter, repr(number)))
-    return out
-
-
-def _global(expr: Expr) -> bool:
-    """``expr`` reads numbers and global parameters only (``_evaluated``)."""
-    if isinstance(expr, Num):
-        return True
-    if isinstance(expr, Var):
-        if expr.name is not None:
-            return expr.name.startswith("_")
-        return isinstance(expr.index, Num) and expr.index.value > 30
-    if isinstance(expr, Binary):
-        return _global(expr.left) and _global(expr.right)
-    if isinstance(expr, Unary):
-        return _global(expr.operand)
-    if isinstance(expr, Func):
-        return all(_global(arg) for arg in expr.args)
-    return False
+        if isinstance(values.get(letter.upper()), Expr) and not is_number(text):
+            raise unmodelled(f"{letter}{text}: a computed word in a G70-G72 profile of a program kept as written is "
+                             "not modelled (the controller evaluates it where the cycle runs, and the program is not "
+                             "run here: write the numbers)")
+    return words
 
 
 def _profile(written: Iterator[Written], start: complex, ctx: Context, name: str, at: Location,
              scale: float, point: dict[str, float]) -> list[Piece]:
     """The cycle's pieces: the approach from ``start``, then the subprogram's moves (module docstring), read
     one block at a time: ``point`` is moved on to each move's end before the next block is read (where a
-    read of the current position reads it: ``_evaluated``, ``_run_profile``); a refusal is located at the
+    read of the current position reads it: ``_profile_readings``, ``_run_profile``); a refusal is located at the
     cycle's Q and names the profile's line."""
     pieces: list[Piece] = []
     mode: str | None = None
@@ -443,7 +410,7 @@ def _profile(written: Iterator[Written], start: complex, ctx: Context, name: str
                              "program kept as written is not modelled (the controller runs it as it reads the "
                              "profile, and the program is not run here: write the moves it makes)")
         if values:
-            words = _evaluated(words, values, ctx, unmodelled, point)
+            words = _kept_words(words, values, unmodelled)
         got: dict[str, float] = {}
         for letter, num in words:
             up = letter.upper()
