@@ -28,24 +28,15 @@ LEXED: Final = 8
 """The bit of ``scan_words``'s answer for a line whose first word the lexer judges: an O (a program number),
 or an N whose number is not digits only (an error)."""
 
-_BLANK: Final = 1
-_DIGIT: Final = 2
-_POINT: Final = 3
-_MINUS: Final = 4
-_PLUS: Final = 5
-_END: Final = 6
 _AXIS: Final = 8
 """An upper-case letter whose canonical number has a decimal point."""
 _CODE: Final = 9
 """An upper-case letter whose canonical number is digits only."""
 _LETTER: Final = 10
 """Any other letter: a plain word, never a canonical one (K, whose kind depends on the block; lower case)."""
-_CLASS: Final = bytes(_BLANK if chr(c) in " \t" else _DIGIT if chr(c).isdigit() else _POINT if chr(c) == "."
-                      else _MINUS if chr(c) == "-" else _PLUS if chr(c) == "+" else _END if chr(c) == ";"
-                      else _AXIS if chr(c) in "XYZABCUVWIJRQF" else _CODE if chr(c) in "GMNOTHDLPS"
-                      else _LETTER if chr(c).isalpha() else 0
-                      for c in range(128)) + bytes(128)
-"""Per byte, what it is to the scan (0: nothing a line of words holds)."""
+_CLASS: Final = bytes(_AXIS if chr(c) in "XYZABCUVWIJRQF" else _CODE if chr(c) in "GMNOTHDLPS"
+                      else _LETTER if chr(c).isascii() and chr(c).isalpha() else 0 for c in range(256))
+"""Per byte, the letter it is to the scan (0: not a letter)."""
 _MAX_FRACTION: Final = 6
 _LETTERS: Final[list[str]] = [chr(c) for c in range(128)]
 """An ASCII byte's character (compiled: a list item, not a one-character slice of the line)."""
@@ -65,7 +56,9 @@ def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
         b = text.encode("ascii")  # compiled, a C call; ``str.isascii`` would be a method look-up
     except UnicodeEncodeError:
         return 0, NO_WORDS, -1
-    # Positions as i64 (compiled: machine integers, not tagged ones whose every step checks for overflow).
+    # Positions as i64 (compiled: machine integers, not tagged ones whose every step checks for overflow);
+    # each byte read once into a local, digits and blanks told by comparisons (a table look-up is a second
+    # index, with its own checks).
     n: i64 = len(b)
     table = _CLASS
     letters = _LETTERS
@@ -74,58 +67,51 @@ def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
     words: list[tuple[str, str]] = []
     sequence = -1
     i: i64 = 0
-    while True:
-        blanks = i
-        while i < n and table[b[i]] == _BLANK:
-            i += 1
-        if i == n:
-            if i != blanks or not words:  # blanks at the end, or no word at all
-                canonical = False
-            break
-        if i != blanks:  # canonical: one space between words, none before the first
-            if i - blanks != 1 or b[blanks] != 32 or not words:
-                canonical = False
-        elif words:  # 'X1Y2': no blank between two words
-            canonical = False
-        c = b[i]
+    while i < n and (b[i] == 32 or b[i] == 9):  # ' ', '\t'
+        i += 1
+    if i != 0 or i == n:  # blanks first, or no word at all
+        canonical = False
+    while i < n:
+        c = b[i]  # a letter, or the end of block
         k = table[c]
         if k < _AXIS:
-            if k != _END:
+            if c != 59:  # ';'
                 return 0, NO_WORDS, -1
             i += 1
-            while i < n and table[b[i]] == _BLANK:
+            while i < n and (b[i] == 32 or b[i] == 9):
                 i += 1
             if i != n:
                 return 0, NO_WORDS, -1
             canonical = False  # ';': the end of block, written out
             break
         i += 1
-        if i < n and table[b[i]] == _BLANK:
+        if i < n and (b[i] == 32 or b[i] == 9):
             canonical = False  # 'X 1.': a blank between the letter and its number
-            while i < n and table[b[i]] == _BLANK:
+            while i < n and (b[i] == 32 or b[i] == 9):
                 i += 1
         start = i
-        sign = table[b[i]] if i < n else 0
-        signed = sign == _MINUS or sign == _PLUS
+        sign = b[i] if i < n else 0
+        signed = sign == 45 or sign == 43  # '-', '+'
         if signed:
             i += 1
-            if sign == _PLUS or k != _AXIS:  # '+1.', 'T-1': plain, not canonical
+            if sign == 43 or k != _AXIS:  # '+1.', 'T-1': plain, not canonical
                 canonical = False
         digits = i
-        first_n = not words and (c == 78 or c == 110)  # 'N', 'n' first: its number is the block's
+        first_n = (c == 78 or c == 110) and not words  # 'N', 'n' first: its number is the block's
         if first_n:
             sequence = 0
-            while i < n and table[b[i]] == _DIGIT:
+            while i < n and 48 <= b[i] <= 57:
                 sequence = sequence * 10 + b[i] - 48
                 i += 1
         else:
-            while i < n and table[b[i]] == _DIGIT:
+            while i < n and 48 <= b[i] <= 57:
                 i += 1
         whole = i - digits
-        if i < n and b[i] == 46:  # '.'
+        point = i < n and b[i] == 46  # '.'
+        if point:
             i += 1
             fraction = i
-            while i < n and table[b[i]] == _DIGIT:
+            while i < n and 48 <= b[i] <= 57:
                 i += 1
             places = i - fraction
             if whole == 0:
@@ -136,26 +122,33 @@ def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
                   or places > 0 and b[i - 1] == 48
                   or signed and places == 0 and whole == 1 and b[digits] == 48):
                 canonical = False  # 'G1.5', '00.5', more than six places, '0.10', '-0.'
-            point = True
         else:
             if whole == 0:  # a letter without a number
                 return 0, NO_WORDS, -1
             if k != _CODE:
                 canonical = False  # 'X10': no point
-            point = False
         if c == 71 or c == 77 or c == 103 or c == 109:  # 'G', 'M', 'g', 'm'
             kind |= CODES
         if first_n:
             if point or signed:
                 kind |= LEXED  # 'N10.', 'N-1': the lexer's to judge
                 sequence = -1
-        elif not words and (c == 79 or c == 111):  # 'O', 'o' first: a program number, the lexer's
+        elif (c == 79 or c == 111) and not words:  # 'O', 'o' first: a program number, the lexer's
             kind |= LEXED
         words.append((letters[c], text[start:i]))
         if i == n:
             break
-        if table[b[i]] >= _AXIS:  # the next word follows at once ('X1Y2')
-            continue
-        if table[b[i]] != _BLANK and b[i] != 59:  # ';'
+        after = b[i]
+        if after == 32 or after == 9:  # blanks, then the next word or the end
+            if after == 9 or i + 1 < n and (b[i + 1] == 32 or b[i + 1] == 9):
+                canonical = False  # canonical: one space between words
+            i += 1
+            while i < n and (b[i] == 32 or b[i] == 9):
+                i += 1
+            if i == n:
+                canonical = False  # blanks at the end
+        elif after == 59 or table[after] >= _AXIS:  # ';', or the next word at once ('X1Y2')
+            canonical = False
+        else:
             return 0, NO_WORDS, -1
     return (kind | CANONICAL if canonical else kind), words, sequence
