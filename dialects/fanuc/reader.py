@@ -16,7 +16,6 @@ from postproc.syntaxes.lines import BOM, EOF_BYTE, lexable
 
 from postproc.rs274.canonical_line import CANONICAL, CODES, LEXED, scan_words
 from postproc.rs274.lexer import lex_block
-from postproc.rs274.line_ends import split_line
 
 from .macro import read_call
 
@@ -36,7 +35,17 @@ class FanucReader(Reader):
 def read_line(raw: str, number: int, ctx: Context) -> Block:
     """Line ``number`` of the program (``raw``, with its end of line) as a lexed block; a line the reader
     refuses is reported and kept as text only."""
-    text, eol = split_line(raw)
+    size = len(raw)
+    last = raw[size - 1] if size else ""  # (compiled: a one-character string is a cached object)
+    if last == "\n":
+        if size > 1 and raw[size - 2] == "\r":
+            text, eol = raw[:-2], "\r\n"
+        else:
+            text, eol = raw[:-1], "\n"
+    elif last == "\r":
+        text, eol = raw[:-1], "\r"
+    else:
+        text, eol = raw, ""
     # Likeliest first: a line of words only (a CAM program's every line), read whole by the family's word
     # scan (``postproc.rs274.canonical_line``), which also tells a canonical line (a writer may copy it), a
     # line without a G or M word (no call to look for) and the block number; a program number, or a block

@@ -71,8 +71,8 @@ def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
         i += 1
     if i != 0 or i == n:  # blanks first, or no word at all
         canonical = False
+    c = b[i] if i < n else 0  # the byte at i: a letter, or the end of block
     while i < n:
-        c = b[i]  # a letter, or the end of block
         k = table[c]
         if k < _AXIS:
             if c != 59:  # ';'
@@ -138,17 +138,24 @@ def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
         words.append((letters[c], text[start:i]))
         if i == n:
             break
-        after = b[i]
-        if after == 32 or after == 9:  # blanks, then the next word or the end
-            if after == 9 or i + 1 < n and (b[i + 1] == 32 or b[i + 1] == 9):
-                canonical = False  # canonical: one space between words
+        c = b[i]
+        if c == 32:  # a space, then (likeliest) the next word's letter
             i += 1
-            while i < n and (b[i] == 32 or b[i] == 9):
-                i += 1
             if i == n:
-                canonical = False  # blanks at the end
-        elif after == 59 or table[after] >= _AXIS:  # ';', or the next word at once ('X1Y2')
+                canonical = False  # a blank at the end
+                break
+            c = b[i]
+            if table[c] >= _AXIS:
+                continue
+        elif c == 59 or table[c] >= _AXIS:  # ';', or the next word at once ('X1Y2')
             canonical = False
-        else:
+            continue
+        elif c != 9:
             return 0, NO_WORDS, -1
+        canonical = False  # canonical: one space between words, no tab
+        while i < n and (b[i] == 32 or b[i] == 9):
+            i += 1
+        if i == n:
+            break
+        c = b[i]
     return (kind | CANONICAL if canonical else kind), words, sequence
