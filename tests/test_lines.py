@@ -302,9 +302,8 @@ def test_the_chunk_checks_are_line_problem_line_by_line(lines, limit, bom):
     import postproc.syntaxes.lines
     from postproc.context import Context
     from postproc.errors import Diagnostics, ErrorLevel
-    raw = [text + (end or "\n" if i < len(lines) - 1 else end) for i, (text, end) in enumerate(lines)]  # lines
-    if bom and raw:
-        raw[0] = postproc.syntaxes.lines.BOM + raw[0]
+    program = (postproc.syntaxes.lines.BOM if bom else "") + "".join(text + end for text, end in lines)
+    raw = io.StringIO(program, newline="").readlines()  # its physical lines, as a stream splits them
     ctx = Context("p.nc", MachineSetup(limits=Limits(line_length=limit)), Diagnostics(ErrorLevel.WARN,
                   warn_stream=io.StringIO()), "fanuc")
     got = list(postproc.syntaxes.lines.checked_lines(raw, ctx))
