@@ -285,3 +285,36 @@ def test_a_byte_order_mark_does_not_count_in_the_line_length(wrap) -> None:
                               "set-up's <Limits lineLength>)"] and lines == ["\r", "G1\n"]
         else:
             assert errors == [] and lines == io.StringIO(program, newline="").readlines()
+
+
+_CHECKED_TEXT = st.text(alphabet="GX1.0 (;)\t\u00e9\u0661\x0b", max_size=70)
+CHECKED_LINES = st.lists(st.tuples(st.one_of(_CHECKED_TEXT, st.builds(lambda n, d: "X" + "1" * n + "." + d,
+                                                                      st.integers(10, 40), st.text("19.", max_size=9))),
+                                   st.sampled_from(["\n", "\r\n", "\r", ""])), max_size=30)
+
+
+@given(lines=CHECKED_LINES, limit=st.integers(5, 80), bom=st.booleans())
+@settings(max_examples=300, deadline=None)
+def test_the_chunk_checks_are_line_problem_line_by_line(lines, limit, bom):
+    # ``checked_lines`` checks a chunk of lines at once with a few C calls and only a chunk that fails them line
+    # by line (``line_problem``): the lines it passes and the errors it reports are ``line_problem``'s on each
+    # line, whatever the chunk holds (non-ASCII, long digit runs, comments, over-long lines)
+    import postproc.syntaxes.lines
+    from postproc.context import Context
+    from postproc.errors import Diagnostics, ErrorLevel
+    program = (postproc.syntaxes.lines.BOM if bom else "") + "".join(text + end for text, end in lines)
+    raw = io.StringIO(program, newline="").readlines()  # its physical lines, as a stream splits them
+    ctx = Context("p.nc", MachineSetup(limits=Limits(line_length=limit)), Diagnostics(ErrorLevel.WARN,
+                  warn_stream=io.StringIO()), "fanuc")
+    got = list(postproc.syntaxes.lines.checked_lines(raw, ctx))
+    expected, errors = [], []
+    for number, line in enumerate(raw, 1):
+        lead = number == 1 and line[:1] == postproc.syntaxes.lines.BOM
+        problem = postproc.syntaxes.lines.line_problem(line[1:] if lead else line, limit)
+        if problem is None:
+            expected.append(line)
+        else:
+            expected.append(line[len(line.rstrip("\r\n")):])
+            errors.append(f"p.nc:{number}:{problem[1] + lead}: warning: {problem[0]}")
+    assert got == expected
+    assert [str(w) for w in ctx.diagnostics.warnings] == errors

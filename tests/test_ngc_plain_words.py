@@ -44,6 +44,6 @@ def test_plain_words_reads_lines_as_written(code: str, words: list[tuple[str, st
     assert plain_words(code) == words == _by_regex(code)
 
 
-def test_a_line_with_unicode_digits_is_still_read_by_the_regexes() -> None:
+def test_a_line_with_unicode_digits_is_read_by_the_slow_path_as_the_regexes_read_it() -> None:
     block = lex_block("t.ngc", 1, "G1 X\u0661\u0662", "\n", "linuxcnc")
     assert block.words == [("G", "1"), ("X", "\u0661\u0662")]

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from mypy_extensions import mypyc_attr
 
-from typing import Iterable, Iterator, Final
+from typing import Iterable, Iterator
 
 from postproc.context import Context
 from postproc.dialect import Reader
@@ -14,15 +14,10 @@ from postproc.ir import Block, Sequence
 
 from postproc.syntaxes.lines import BOM, EOF_BYTE, lexable
 
-from postproc.rs274.canonical_line import CANONICAL, CODES, scan_words
-from postproc.rs274.lexer import WORDS_ONLY, WORD, lex_block
+from postproc.rs274.canonical_line import CANONICAL, CODES, LEXED, scan_words
+from postproc.rs274.lexer import lex_block
 
 from .macro import read_call
-
-
-_FAST_START: Final = frozenset("NGXYZABCUVWIJKRFSTMHDPQ")
-"""First letters of a line the fast path takes: a block number, or a word a CAM line starts with (not O,
-a program number, nor anything that is not an upper-case address)."""
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -51,35 +46,21 @@ def read_line(raw: str, number: int, ctx: Context) -> Block:
         text, eol = raw[:-1], "\r"
     else:
         text, eol = raw, ""
-    # Likeliest first: a block of words only, starting with its N number or (a CAM program's
-    # usual line) with a G code or an axis word; O (a program number) and the rest are lexed.
-    first = text[0] if text else ""  # (compiled: a cached one-character string, where a slice is a call)
-    if first in _FAST_START:
-        # A canonical block (``postproc.rs274.canonical_line``): words only, single spaces, a
-        # digits-only N; a byte scan finds it and tells a CAM line (no G or M word, so no call
-        # to look for) from the rest, and takes upper-case plain words whose numbers are not
-        # canonical too (``X10``).
-        kind, words, sequence = scan_words(text)  # and its words, and its block number
-        if kind:
-            block = Block(number, text, eol, words)
-            if kind & CANONICAL:
-                block.canonical = True
-            if sequence >= 0:
-                block.sections["Sequence"] = Sequence(sequence)
-            if kind & CODES and ("M9" in text or "G6" in text):
-                return _with_call(block, ctx, number, text, eol)
-            return block
-        # Otherwise a block of words only, once checked it is.
-        if "(" not in text and ")" not in text and "/" not in text and WORDS_ONLY.fullmatch(text):
-            words = WORD.findall(text)
-            num = words[0][1] if first == "N" else "0"
-            if "." not in num and num[0] not in "+-":
-                block = Block(number, text, eol, words)
-                if first == "N":
-                    block.sections["Sequence"] = Sequence(int(num))
-                if "M9" in text or "G6" in text or "m9" in text or "g6" in text:
-                    return _with_call(block, ctx, number, text, eol)
-                return block
+    # Likeliest first: a line of words only (a CAM program's every line), read whole by the family's word
+    # scan (``postproc.rs274.canonical_line``), which also tells a canonical line (a writer may copy it), a
+    # line without a G or M word (no call to look for) and the block number; a program number, or a block
+    # number the lexer refuses, is the lexer's, as is every other line.
+    kind, words, sequence = scan_words(text)
+    if kind and not kind & LEXED:
+        block = Block(number, text, eol, words)
+        if kind & CANONICAL:
+            block.canonical = True
+        if sequence >= 0:
+            block.sections["Sequence"] = Sequence(sequence)
+        if kind & CODES and ("M9" in text or "G6" in text
+                             or not kind & CANONICAL and ("m9" in text or "g6" in text)):  # (canonical: upper case)
+            return _with_call(block, ctx, number, text, eol)
+        return block
     try:
         if EOF_BYTE in text or number == 1 and text[:1] == BOM:
             block = lex_block(ctx.file, number, lexable(number, text), eol, leader=number == 1)

@@ -14,4 +14,23 @@ property test. A plugin declares nothing for it.
   pydantic, which decides the rest (``tests/test_setup_values.py``).
 
 Nothing is imported here: a run imports the lanes it installs, with the modules they copy.
+
+What reads a line is not here, by decision (issue 30, item 2 of the review): each reading shortcut was either
+the one algorithm or has gone, so the reading has one path, compiled or pure.
+
+* The byte scan of a line of words (``rs274.canonical_line.scan_words``, ISO family) IS the family's reading of
+  plain words, not a copy of it: ``rs274.lexer.lex_block`` reads every line's words with it, and the Fanuc
+  reader reads a whole plain line with it (its block, block number and canonical hint from the one pass).
+  The reader's second lane (a ``WORDS_ONLY`` full match and ``WORD.findall`` for the lines the scan left:
+  lower case, tabs, ``;``) has gone: the scan reads those lines too. The regexes stay only as the scan's
+  definition, which ``tests/test_canonical_line.py`` holds it to on random lines.
+* ``rs274.ngc_lexer.plain_words`` is likewise RS274/NGC's one reading of plain words; its one-regex fallback
+  (for a line that is not ASCII) has gone: such a line is the slow path's (``_slow_words``), which reads the
+  same words (``tests/test_ngc_plain_words.py``).
+* ``syntaxes.lines`` checks a chunk of lines with a few C calls (ASCII, no run of more than ``MAX_DIGITS``
+  digits, no stray line separator, no long line) and a chunk that fails them line by line
+  (``line_problem``): the chunk test is a sufficient condition for ``line_problem`` finding nothing, not a
+  second check, so it never decides a line is wrong; ``tests/test_lines.py`` holds the two to the same lines
+  and errors on random chunks, as it holds a stream read many lines at once to the same stream read a line
+  at a time.
 """

@@ -1,10 +1,13 @@
-"""Whether a line is already in canonical spelling (``postproc.numbers.CANONICAL_BLOCK``), by one scan
-over its bytes.
+"""The ISO word scan: the words of a line of words only, read in one pass over its bytes, and whether the
+line is already in canonical spelling (``postproc.numbers.CANONICAL_BLOCK``) from the same pass.
 
-Compiled (mypyc), the scan costs a fifth of the regex, which was the largest single cost of reading a
-CAM line (~8,500 instructions a line). The pure-Python build runs the same scan (there it is slower than
-the regex: both builds compute one way, and only the compiled one is the fast one).
-``tests/test_canonical_line.py`` holds the scan to the regex on any text.
+This is the family's one reading of plain words (``postproc.rs274.lexer`` reads every line's words with
+it; the Fanuc reader reads a whole plain line with it): a line of words only is what ``WORDS_ONLY``
+matches whole, its words what ``WORD.findall`` finds, for ASCII text. Those two regexes are the definition;
+``tests/test_canonical_line.py`` holds the scan to them (and to ``CANONICAL_BLOCK``) on random lines.
+Compiled (mypyc), the scan costs a fraction of the regexes, which were the largest single cost of reading a
+CAM line (~8,500 instructions a line); the pure-Python build runs the same scan (slower there than the
+regexes: both builds compute one way, and only the compiled one is the fast one).
 """
 
 from __future__ import annotations
@@ -14,119 +17,145 @@ from typing import Final
 from mypy_extensions import i64
 
 CANONICAL: Final = 1
-"""``scan``'s answer for a canonical line without G or M words (a CAM line: N, axes, F)."""
+"""The bit of ``scan_words``'s answer for a canonical line (``CANONICAL_BLOCK``): upper-case words separated by
+single spaces, a code letter and digits, an axis-type letter and ``-?(0|[1-9][0-9]*)\\.`` with at most six
+decimals and no trailing zero, never ``-0.``."""
 CODES: Final = 2
 """The bit of ``scan_words``'s answer for a line that has a G or M word (a reader then looks for calls)."""
-WITH_CODES: Final = CANONICAL | CODES
-"""``scan``'s answer for a canonical line that may have G or M words (``CANONICAL`` bit set)."""
 WORDS: Final = 4
-"""``scan_words``'s answer (with ``CODES`` or not) for a line of plain words that is not canonical."""
+"""The bit of ``scan_words``'s answer for any line of words only (set whenever the answer is not 0)."""
+LEXED: Final = 8
+"""The bit of ``scan_words``'s answer for a line whose first word the lexer judges: an O (a program number),
+or an N whose number is not digits only (an error)."""
 
-_AXIS: Final = 1
-_CODE: Final = 2
-_KIND: Final = bytes(_AXIS if chr(c) in "XYZABCUVWIJRQF" else _CODE if chr(c) in "GMNOTHDLPS" else 0
-                     for c in range(256))
-"""Per byte: a letter whose number has a decimal point, a letter of a whole number, or neither."""
+_AXIS: Final = 8
+"""An upper-case letter whose canonical number has a decimal point."""
+_CODE: Final = 9
+"""An upper-case letter whose canonical number is digits only."""
+_LETTER: Final = 10
+"""Any other letter: a plain word, never a canonical one (K, whose kind depends on the block; lower case)."""
+_CLASS: Final = bytes(_AXIS if chr(c) in "XYZABCUVWIJRQF" else _CODE if chr(c) in "GMNOTHDLPS"
+                      else _LETTER if chr(c).isascii() and chr(c).isalpha() else 0 for c in range(256))
+"""Per byte, the letter it is to the scan (0: not a letter)."""
 _MAX_FRACTION: Final = 6
 _LETTERS: Final[list[str]] = [chr(c) for c in range(128)]
 """An ASCII byte's character (compiled: a list item, not a one-character slice of the line)."""
 
 
 NO_WORDS: Final[list[tuple[str, str]]] = []
-"""``scan_words``'s words for a line that is not canonical (one shared list: never appended to)."""
-
-
-def scan(text: str) -> int:
-    """0 unless ``CANONICAL_BLOCK.fullmatch(text)``, by one pass over the bytes: words separated by
-    single spaces; a code letter and digits; an axis-type letter and ``-?(0|[1-9][0-9]*)\\.`` with at
-    most six decimals and no trailing zero, never ``-0.``. A canonical line is ``CANONICAL``, or
-    ``WITH_CODES`` when it has a G or M word (a reader then looks for calls in it)."""
-    kind = scan_words(text)[0]
-    return kind if kind & CANONICAL else 0
+"""``scan_words``'s words for a line that is not words only (one shared list: never appended to)."""
 
 
 def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
-    """``scan``'s answer, with the line's words as a reader keeps them (letter, number as written) and
-    the number of its block number when it starts with one (else -1), from the same pass: a canonical
-    line needs no split, and its block number no second parse. ``NO_WORDS`` when the answer is 0.
-
-    A line of upper-case words whose numbers are only not canonical (``X10``, ``X1.50``, ``G43.4``) is
-    ``WORDS`` (``| CODES`` with a G or M word), with the words ``WORD.findall`` finds in it: such a line
-    (a number without a point, as hand-written Fanuc programs have) then needs no regex either. A block
-    number must still be digits only, and a sign only ``-`` on an axis-type letter."""
-    if not text:
-        return 0, NO_WORDS, -1
+    """The line's kind (0: not a line of words only, or not ASCII; else ``WORDS``, with ``CANONICAL``,
+    ``CODES`` and ``LEXED`` as they apply), its words as a reader keeps them (letter, number as written,
+    blanks left out) and the number of its block number when its first word is an N with digits only (else
+    -1), from one pass: a canonical line needs no split, and its block number no second parse.
+    ``NO_WORDS`` when the kind is 0."""
     try:
         b = text.encode("ascii")  # compiled, a C call; ``str.isascii`` would be a method look-up
     except UnicodeEncodeError:
         return 0, NO_WORDS, -1
-    # Positions as i64 (compiled: machine integers, not tagged ones whose every step checks for overflow).
+    # Positions as i64 (compiled: machine integers, not tagged ones whose every step checks for overflow);
+    # each byte read once into a local, digits and blanks told by comparisons (a table look-up is a second
+    # index, with its own checks).
     n: i64 = len(b)
-    kind = _KIND
+    table = _CLASS
     letters = _LETTERS
     canonical = True
-    codes = False
+    kind = WORDS
     words: list[tuple[str, str]] = []
     sequence = -1
     i: i64 = 0
-    while True:
-        start = i
-        c = b[i]
-        k = kind[c]
+    while i < n and (b[i] == 32 or b[i] == 9):  # ' ', '\t'
         i += 1
-        if k == _CODE:
-            if c == 71 or c == 77:  # 'G', 'M'
-                codes = True
-            digits = i
-            if start == 0 and c == 78:  # 'N' first: its number is the block's
-                sequence = 0
-                while i < n and 48 <= b[i] <= 57:
-                    sequence = sequence * 10 + b[i] - 48
-                    i += 1
-                if i < n and b[i] == 46:  # 'N10.': the lexer's to judge
-                    return 0, NO_WORDS, -1
-            else:
-                while i < n and 48 <= b[i] <= 57:
-                    i += 1
-            if i == digits:
+    if i != 0 or i == n:  # blanks first, or no word at all
+        canonical = False
+    c = b[i] if i < n else 0  # the byte at i: a letter, or the end of block
+    while i < n:
+        k = table[c]
+        if k < _AXIS:
+            if c != 59:  # ';'
                 return 0, NO_WORDS, -1
-            if i < n and b[i] == 46:  # 'G43.4': a plain word, not canonical
+            i += 1
+            while i < n and (b[i] == 32 or b[i] == 9):
+                i += 1
+            if i != n:
+                return 0, NO_WORDS, -1
+            canonical = False  # ';': the end of block, written out
+            break
+        i += 1
+        if i < n and (b[i] == 32 or b[i] == 9):
+            canonical = False  # 'X 1.': a blank between the letter and its number
+            while i < n and (b[i] == 32 or b[i] == 9):
+                i += 1
+        start = i
+        sign = b[i] if i < n else 0
+        signed = sign == 45 or sign == 43  # '-', '+'
+        if signed:
+            i += 1
+            if sign == 43 or k != _AXIS:  # '+1.', 'T-1': plain, not canonical
                 canonical = False
+        digits = i
+        first_n = (c == 78 or c == 110) and not words  # 'N', 'n' first: its number is the block's
+        if first_n:
+            sequence = 0
+            while i < n and 48 <= b[i] <= 57:
+                sequence = sequence * 10 + b[i] - 48
                 i += 1
-                while i < n and 48 <= b[i] <= 57:
-                    i += 1
-        elif k == _AXIS:
-            negative = i < n and b[i] == 45  # '-'
-            if negative:
-                i += 1
-            digits = i
+        else:
             while i < n and 48 <= b[i] <= 57:
                 i += 1
-            whole = i - digits
-            if i < n and b[i] == 46:  # '.'
+        whole = i - digits
+        point = i < n and b[i] == 46  # '.'
+        if point:
+            i += 1
+            fraction = i
+            while i < n and 48 <= b[i] <= 57:
                 i += 1
-                fraction = i
-                while i < n and 48 <= b[i] <= 57:
-                    i += 1
-                places = i - fraction
-                if whole == 0:
-                    if places == 0:
-                        return 0, NO_WORDS, -1
-                    canonical = False  # '.5'
-                elif (whole > 1 and b[digits] == 48 or places > _MAX_FRACTION
-                      or places > 0 and b[i - 1] == 48 or negative and places == 0 and whole == 1 and b[digits] == 48):
-                    canonical = False  # '00.5', more than six places, '0.10', '-0.'
-            elif whole == 0:
-                return 0, NO_WORDS, -1
-            else:
-                canonical = False  # 'X10': no point
+            places = i - fraction
+            if whole == 0:
+                if places == 0:  # 'X.' is no number
+                    return 0, NO_WORDS, -1
+                canonical = False  # '.5'
+            elif (k != _AXIS or whole > 1 and b[digits] == 48 or places > _MAX_FRACTION
+                  or places > 0 and b[i - 1] == 48
+                  or signed and places == 0 and whole == 1 and b[digits] == 48):
+                canonical = False  # 'G1.5', '00.5', more than six places, '0.10', '-0.'
         else:
-            return 0, NO_WORDS, -1
-        words.append((letters[c], text[start + 1:i]))
+            if whole == 0:  # a letter without a number
+                return 0, NO_WORDS, -1
+            if k != _CODE:
+                canonical = False  # 'X10': no point
+        if c == 71 or c == 77 or c == 103 or c == 109:  # 'G', 'M', 'g', 'm'
+            kind |= CODES
+        if first_n:
+            if point or signed:
+                kind |= LEXED  # 'N10.', 'N-1': the lexer's to judge
+                sequence = -1
+        elif (c == 79 or c == 111) and not words:  # 'O', 'o' first: a program number, the lexer's
+            kind |= LEXED
+        words.append((letters[c], text[start:i]))
         if i == n:
-            return (CANONICAL if canonical else WORDS) | (CODES if codes else 0), words, sequence
-        if b[i] != 32:
+            break
+        c = b[i]
+        if c == 32:  # a space, then (likeliest) the next word's letter
+            i += 1
+            if i == n:
+                canonical = False  # a blank at the end
+                break
+            c = b[i]
+            if table[c] >= _AXIS:
+                continue
+        elif c == 59 or table[c] >= _AXIS:  # ';', or the next word at once ('X1Y2')
+            canonical = False
+            continue
+        elif c != 9:
             return 0, NO_WORDS, -1
-        i += 1
+        canonical = False  # canonical: one space between words, no tab
+        while i < n and (b[i] == 32 or b[i] == 9):
+            i += 1
         if i == n:
-            return 0, NO_WORDS, -1
+            break
+        c = b[i]
+    return (kind | CANONICAL if canonical else kind), words, sequence

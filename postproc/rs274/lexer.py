@@ -5,9 +5,10 @@ a statement after N (``#1=..``, ``IF``, ``GOTO``, ``WHILE``, ``END``) and comput
 (``X[#1*2.]``, ``X#1``, ``X-#3``, ``G#10``).
 
 Plain functions and precompiled regexes (as in tomli). The common line - words only, no comment - is
-checked with one full match and split with one ``findall``; only a line that fails it is scanned by
-hand for macro syntax (linear: each character is looked at a bounded number of times), and columns are
-computed only for errors.
+read by the family's word scan (``canonical_line.scan_words``: one pass over its bytes, compiled), whose
+definition is ``WORDS_ONLY`` (a line of words only) and ``WORD`` (its words); only a line it refuses is
+scanned by hand for macro syntax (linear: each character is looked at a bounded number of times), and
+columns are computed only for errors.
 
 A computed word keeps its text as written in ``block.words`` (``("X", "[#1*2.]")``) and its tree in
 ``block.values`` (``values["X"]``); a statement is an ``Assign`` or ``Control`` section and has no words.
@@ -20,6 +21,7 @@ import re
 from postproc.errors import Location, ParseError, character_name
 from postproc.ir import BlockDelete, Block, Comments, ProgramStart, Sequence, TapeMark
 
+from .canonical_line import scan_words
 from .expressions import FANUC_SPELLING, ExprSyntaxError, parse_word_value
 from .line_ends import split_line as split_line, split_lines as split_lines  # (the readers' line splitting, compiled)
 from .macro_b import parse_statement_fanuc
@@ -27,7 +29,9 @@ from .macro_b import parse_statement_fanuc
 NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)"
 WORD = re.compile(r"([A-Za-z])[ \t]*(" + NUMBER + ")")
 WORDS_ONLY = re.compile(r"(?:[ \t]*+[A-Za-z][ \t]*+[-+]?+(?:\d++\.?+\d*+|\.\d++))*+[ \t]*+;?+[ \t]*+")
-"""A line of words only; possessive quantifiers: a block has one reading, never backtrack."""
+"""A line of words only; possessive quantifiers: a block has one reading, never backtrack. The definition the
+word scan reads (``canonical_line.scan_words``, held to it by ``tests/test_canonical_line.py``); the reading
+itself runs the scan."""
 _BADWORD = re.compile(r"[A-Za-z][ \t]*[-+.\d]*")
 _COLON = re.compile(r"[ \t]*:(\d+)")
 _SKIP = re.compile(r"[ \t]*/(\d?)")
@@ -61,10 +65,12 @@ def lex_block(file: str, number: int, text: str, eol: str, macro: bool = True, l
         block.words = [(":", colon.group(1))]
         block.add(ProgramStart(int(colon.group(1)), None))
         code = " " * colon.end() + code[colon.end():]
-        if WORDS_ONLY.fullmatch(code):
-            block.words.extend(WORD.findall(code))
+        kind, words, _ = scan_words(code)
+        if kind:
+            block.words.extend(words)
             return block
-    if not WORDS_ONLY.fullmatch(code):
+    kind, words, _ = scan_words(code)  # a line of words only: the family's word scan reads it
+    if not kind:
         stripped = code.strip()
         if stripped == "%":
             block.add(TapeMark())
@@ -72,8 +78,6 @@ def lex_block(file: str, number: int, text: str, eol: str, macro: bool = True, l
         if not macro:
             raise ParseError(*_explain(file, number, code))
         words = _lex_macro(file, block, code)
-    else:
-        words = WORD.findall(code)
     block.words = words
     if words:
         letter, num = words[0]

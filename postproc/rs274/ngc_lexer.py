@@ -6,15 +6,15 @@ What differs from the ISO lexer (``lexer.py``), and why this is a module of its 
 * ``( )`` comments do not nest: a ``(`` inside a comment is an error ("Nested comment found").
 * Spaces and tabs are allowed anywhere outside comments, even inside a number (``X 1 0`` is X10)
   and between its sign and its digits (``X - 1.5``, ``X- .5``), as rs274 reads them: the common line
-  is still matched with one regex, the rare spaced-out number takes a slow path. Both regexes are
-  possessive and unambiguous, so a line is scanned in linear time whatever it holds.
+  is still read in one pass (``plain_words``), the rare spaced-out number takes a slow path. The slow
+  path's regexes are possessive and unambiguous, so a line is scanned in linear time whatever it holds.
 * With an ``OwordParser`` (LinuxCNC: ``NgcReader.PARAMETRIC``), o-word lines (``o100 sub``,
   ``o<name> call [1]``) become a ``Control`` section, parameter assignments anywhere in the line
   (``#1=2 G0 X#1``) one ``Assign`` section (all of them, in order: rs274 reads every value of the line
   first, then assigns), and a word whose value is not a plain number (``X[#1*2]``, ``X#1``,
   ``X-#<depth>``, ``G#10``, ``X SIN[30]``) keeps its text as written in ``block.words`` and its tree in
   ``block.values`` (an ``Expr``). Without one (grbl), each of these is a located error naming it.
-  Only lines the one-regex fast path refuses take this road, so a plain line costs nothing more.
+  Only lines ``plain_words`` refuses take this road, so a plain line costs nothing more.
   With one too, a bare ``O100`` is a ``ProgramStart`` (``oword``), and the reader's ``read_call`` turns
   the dialect's subprogram call and return words into a ``Call``/``Return`` (LinuxCNC's Fanuc-style
   subprograms: the plugin knows their codes).
@@ -44,7 +44,10 @@ __all__ = ["NgcReader", "lex_block", "plain_words", "split_lines", "strip_commen
 
 _WORD: Final = re.compile(r"([A-Za-z])[ \t]*(" + NUMBER + ")")
 _WORDS_ONLY: Final = re.compile(r"(?:[ \t]*+[A-Za-z][ \t]*+[-+]?+(?:\d++\.?+\d*+|\.\d++))*+[ \t]*+")
-"""A line of words only (``NUMBER`` spelt possessively: one reading, never backtrack)."""
+"""A line of words only (``NUMBER`` spelt possessively: one reading, never backtrack), and ``_WORD`` its words:
+the definition ``plain_words`` reads, held to it by ``tests/test_ngc_plain_words.py``; the lexer runs
+``plain_words`` alone (a line it leaves, not ASCII included, is ``_slow_words``'s, which reads the same
+words from a line of words only)."""
 _SPACED_NUMBER: Final = re.compile(r"[ \t]*+(?:[-+][ \t]*+)?+(?:\d[\d \t]*+(?:\.[\d \t]*+)?+|\.[ \t]*+\d[\d \t]*+)")
 """A number with blanks anywhere in it, also around its sign (RS274/NGC ignores them); at least one digit."""
 _SKIP: Final = re.compile(r"[ \t]*/")
@@ -80,8 +83,6 @@ def lex_block(file: str, number: int, text: str, eol: str, dialect: str,
             block.add(BlockDelete(1))
             code = " " * m.end() + code[m.end():]
     words = plain_words(code)
-    if words is None and _WORDS_ONLY.fullmatch(code):  # a line plain_words leaves: non-ASCII digits
-        words = _WORD.findall(code)
     if words is not None:
         for letter, _ in words:
             if letter == "O" or letter == "o":  # (compiled, two comparisons; ``in "Oo"`` is a call a word)
@@ -200,7 +201,7 @@ def _next_special(code: str, pos: int) -> int:
 
 def _slow_words(file: str, line: int, code: str, dialect: str, block: Block,
                 oword: OwordParser | None, polar: bool = False) -> list[tuple[str, str]]:
-    """Scan a line the fast regex refused: numbers with blanks inside, o-words, assignments and
+    """Scan a line ``plain_words`` refused: numbers with blanks inside, o-words, assignments and
     expression values (with ``oword``), or an error to explain."""
     words: list[tuple[str, str]] = []
     assigned: list[tuple[Var, Expr]] = []
