@@ -453,3 +453,18 @@ def test_the_readers_fast_path_gives_the_lexers_block(case):
     slow = lex_block("t.nc", 1, line, "\n")
     assert (fast.words, fast.text, fast.eol) == (slow.words, slow.text, slow.eol)
     assert {k: repr(v) for k, v in fast.sections.items()} == {k: repr(v) for k, v in slow.sections.items()}
+
+
+@pytest.mark.parametrize("spelt, plain", [
+    ("M098 P1000", "M98 P1000"), ("N10 M0098P1000", "N10 M98 P1000"), ("M 98 P1000", "M98 P1000"),
+    ("m98 p1000", "M98 P1000"), ("G 65 P1000 A1.", "G65 P1000 A1."), ("g065 p1000 a1.", "G65 P1000 A1."),
+    ("G00 X1. M099", "G00 X1. M99"), ("G065 P1000 A[#1+1]", "G65 P1000 A[#1+1]"),
+])
+def test_a_call_is_read_however_its_code_is_spelt(spelt: str, plain: str) -> None:
+    # M098 is M98 and G 65 is G65 (leading zeros and blanks, as every other code): a test on the text
+    # ("M9" in the line) once left them plain codes, kept as native text and followed by nobody
+    ours, theirs = read(spelt + "\n")[0], read(plain + "\n")[0]
+    assert "Control" in theirs.sections
+    assert ours.sections == theirs.sections | {"Control": ours.sections["Control"]}
+    assert ours.get("Control") == theirs.get("Control") and ours.words == theirs.words
+    assert ours.text == spelt

@@ -17,7 +17,7 @@ from postproc.syntaxes.lines import BOM, EOF_BYTE, lexable
 from postproc.rs274.canonical_line import CANONICAL, CODES, LEXED, scan_words
 from postproc.rs274.lexer import lex_block
 
-from .macro import read_call
+from .macro import makes_call, read_call
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -57,8 +57,7 @@ def read_line(raw: str, number: int, ctx: Context) -> Block:
             block.canonical = True
         if sequence >= 0:
             block.sections["Sequence"] = Sequence(sequence)
-        if kind & CODES and ("M9" in text or "G6" in text
-                             or not kind & CANONICAL and ("m9" in text or "g6" in text)):  # (canonical: upper case)
+        if kind & CODES and makes_call(words):
             return _with_call(block, ctx, number, text, eol)
         return block
     try:
@@ -67,7 +66,7 @@ def read_line(raw: str, number: int, ctx: Context) -> Block:
             block.text = text  # written back as it was
         else:
             block = lex_block(ctx.file, number, text, eol, leader=number == 1)
-        if "M9" in text or "G6" in text or "m9" in text or "g6" in text:
+        if makes_call(block.words):
             read_call(block, ctx)
         return block
     except PostprocError as err:
