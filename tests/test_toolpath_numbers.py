@@ -270,7 +270,7 @@ def _records(draw: st.DrawFn) -> MoveRecord:
 def test_write_lines_writes_records_as_json_writes_their_events(records: list[MoveRecord]) -> None:
     """``write_lines`` writes a record by field, its line number's digits joined with its kind, its feed with the
     controlled point's first key, its last short fraction with its closing (``event_text._KeyTexts``,
-    ``_SHORT_CLOSING``): each line is json's text of the record's ``event()``, the record alone (``event_text``)
+    ``_CLOSING``): each line is json's text of the record's ``event()``, the record alone (``event_text``)
     too."""
     written: list[str] = []
     write_lines(iter(records), written.append, ENCODER)

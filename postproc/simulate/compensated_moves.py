@@ -263,17 +263,16 @@ class CompensatedMoves(Position):
     def _offset_line(self, kind: str, target: list[float], line: int) -> None:
         """A straight move under a tool length alone (a whole program after its G43): ``_write``'s result,
         the programmed point rounded only on the axes that move (as ``line_move``). One pass over the axes
-        builds both points (the record's lists: copies of the last ones, an axis set where its number changes):
-        the values stay the objects ``num`` made (an int stays an int in the JSON line), compared per axis rather
-        than as dictionaries."""
+        builds both points (the record's lists): the values stay the objects ``num`` made (an int stays an int
+        in the JSON line), compared per axis rather than as dictionaries."""
         at, rounded, before = self.at, self.rounded, self.crounded
         offset = self.length.offset
         shifts = self.lathe_shift
         shifted = len(shifts) != 0  # (tested once, not an axis: a mill has none)
         length_at = self.length_index
         axes = self.axes
-        point = rounded[:]  # (a slice and a store an axis that moves: compiled, a new list and an append an axis
-        crounded = before[:]  # cost ~140 instructions a move more)
+        point: list[float | int] = []
+        crounded: list[float | int] = []
         moved = apart = False
         f: float | int | None = None
         mode: str | None = None
@@ -284,7 +283,6 @@ class CompensatedMoves(Position):
                 r = rounded[i]
             else:
                 r = num(value)
-                point[i] = r
             c: Any = r
             if i == length_at:
                 c = num(value + offset)
@@ -292,7 +290,8 @@ class CompensatedMoves(Position):
                 shift = shifts.get(axes[i])
                 if shift is not None:
                     c = num(value + shift + (offset if i == length_at else 0.0))
-            crounded[i] = c
+            point.append(r)  # (appended: compiled, ``[0] * n`` and a store by index cost ~600 instructions a move
+            crounded.append(c)  # more, a list repeated through Python; callgrind, branch simfast3)
             if not moved:  # (identity first: an axis that stays keeps its number's object; never a nan)
                 b = before[i]
                 if c is not b and differs(c, b):

@@ -334,7 +334,7 @@ def _keyed_number_parts(value: float | int, keyed: _KeyedNumbers, parts: list[st
     """A record's key and its number as json writes them (``keyed.text``, then ``_number_parts``), the key and the
     number's whole part in one piece where it is tabled (``_KeyedNumbers``)."""
     if isinstance(value, float):
-        _keyed_float_parts(value, keyed, parts)
+        _keyed_float_parts(value, keyed, parts, None)
     elif 0 <= value < _TABLED:
         parts.append(keyed.whole(value, False))
     elif -_TABLED < value < 0:
@@ -344,12 +344,10 @@ def _keyed_number_parts(value: float | int, keyed: _KeyedNumbers, parts: list[st
         parts.append(str(value))
 
 
-def _keyed_float_parts(value: float, keyed: _KeyedNumbers, parts: list[str], tails: list[str | None] | None = None,
-                       tail: str = "") -> None:
+def _keyed_float_parts(value: float, keyed: _KeyedNumbers, parts: list[str], tail: _Tail | None) -> None:
     """``_keyed_number_parts`` of a float (a float parameter: compiled, unboxed once, where a union's value was
     unboxed again at each comparison; the units machine integers, ``i64``, not tagged ones checked at each step).
-    ``tails`` (with ``tail``, the fixed text that follows the number: ``_SHORT_CLOSING``): a short fraction and that
-    text in one piece, from the table; else ``tail`` follows as its own piece."""
+    ``tail``: the fixed text that follows the number (``_CLOSING``), a short fraction joined with it in one piece."""
     if _SMALLEST <= value < _LARGEST or -_LARGEST < value <= -_SMALLEST:  # (as ``_float_parts``)
         units = i64(value * _SCALE + (0.5 if value > 0.0 else -0.5))
         if float(units) / _SCALE == value:
@@ -362,30 +360,38 @@ def _keyed_float_parts(value: float, keyed: _KeyedNumbers, parts: list[str], tai
                 fraction = magnitude - whole * _UNITS
                 if fraction % _SHORT_STEP == 0:  # ``_fraction_parts``' first case here: a call less a number
                     index = fraction // _SHORT_STEP
-                    if tails is None:
+                    if tail is None:
                         text = _SHORT[index]
                         parts.append(text if text is not None else _short_text(index))
                     else:
-                        text = tails[index]
-                        parts.append(text if text is not None else _tail_text(index, tails, tail))
+                        text = tail.shorts[index]
+                        parts.append(text if text is not None else tail.short(index))
                     return
                 _fraction_parts(fraction, parts)
-                if tails is not None:
-                    parts.append(tail)
+                if tail is not None:
+                    parts.append(tail.text)
                 return
     parts.append(keyed.text)
     _float_parts(value, parts)
-    if tails is not None:
-        parts.append(tail)
+    if tail is not None:
+        parts.append(tail.text)
 
 
-def _tail_text(index: i64, tails: list[str | None], tail: str) -> str:
-    """The point and the decimals of ``index`` ten-thousandths (``_SHORT``'s) followed by ``tail``, kept in
-    ``tails``."""
-    short = _SHORT[index]
-    text = (short if short is not None else _short_text(index)) + tail
-    tails[index] = text
-    return text
+@mypyc_attr(allow_interpreted_subclasses=True)
+class _Tail:
+    """A fixed text that follows a number in a line (a record's closing), and ``_SHORT``'s fractions joined with it
+    (``shorts``, each made the first time met): one piece where there were two."""
+
+    def __init__(self, text: str) -> None:
+        self.text = text
+        self.shorts: list[str | None] = [None] * (_UNITS // _SHORT_STEP)
+
+    def short(self, index: i64) -> str:
+        """The point and the decimals of ``index`` ten-thousandths followed by ``text``, kept in ``shorts``."""
+        short = _SHORT[index]
+        text = (short if short is not None else _short_text(index)) + self.text
+        self.shorts[index] = text
+        return text
 
 
 _LINE_HIGH: Final[list[str | None]] = [None] * _TABLED
@@ -431,9 +437,9 @@ _CLOSE_BOTH: Final = "}}"
 _CLOSE_BOTH_LINE: Final = "}}\n"
 """A record's closing text: the event's brace (with the line end where ``write_lines`` writes it), after the
 controlled point's brace where it has one (one piece)."""
-_SHORT_CLOSING: Final[list[str | None]] = [None] * (_UNITS // _SHORT_STEP)
-"""``_SHORT``'s fractions followed by ``_CLOSE_BOTH_LINE``: a line's last number (a controlled point's, as a CAM
-program's moves under a tool length end) and its closing in one piece, made the first time met."""
+_CLOSING: Final = _Tail(_CLOSE_BOTH_LINE)
+"""The closing of a line that ends with its controlled point (a CAM program's moves under a tool length), joined
+with its last short fraction."""
 
 
 def _record_parts(record: MoveRecord, parts: list[str], line_end: bool) -> None:
@@ -451,7 +457,7 @@ def _record_parts(record: MoveRecord, parts: list[str], line_end: bool) -> None:
     for i in range(len(keys)):
         value = point[i]
         if isinstance(value, float):  # (most often: the float's own call, not through the union's)
-            _keyed_float_parts(value, later[i], parts)
+            _keyed_float_parts(value, later[i], parts, None)
         else:
             _keyed_number_parts(value, later[i], parts)
     centre = record.centre
@@ -494,13 +500,13 @@ def _record_parts(record: MoveRecord, parts: list[str], line_end: bool) -> None:
         keyed = texts.f_first if joined and i == 0 else first[i]
         if i == last:
             if isinstance(value, float):
-                _keyed_float_parts(value, keyed, parts, _SHORT_CLOSING, _CLOSE_BOTH_LINE)
+                _keyed_float_parts(value, keyed, parts, _CLOSING)
             else:
                 _keyed_number_parts(value, keyed, parts)
                 parts.append(_CLOSE_BOTH_LINE)
             return
         if isinstance(value, float):
-            _keyed_float_parts(value, keyed, parts)
+            _keyed_float_parts(value, keyed, parts, None)
         else:
             _keyed_number_parts(value, keyed, parts)
     if ccentre is not None:

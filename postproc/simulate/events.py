@@ -6,8 +6,6 @@ from __future__ import annotations
 
 from typing import Any, Final
 
-from mypy_extensions import i64
-
 from ..context import Context
 from ..errors import ProgramError
 from ..geometry.arcs import PLACES
@@ -50,16 +48,16 @@ def num(value: float) -> float | int:
     ``tests/test_toolpath_numbers.py`` holds it to ``round`` on any float and on near-ties."""
     y = value * _SCALE
     if -_FAST < y < _FAST:  # false for nan; an infinity is beyond
-        units = i64(y)  # (a machine integer: compiled, tagged int arithmetic cost ~90 instructions a call more)
-        if float(units) > y:
+        units = int(y)
+        if units > y:
             units -= 1  # the floor
-        fraction = y - float(units)  # exact: both below 2**47
+        fraction = y - units  # exact: both below 2**47
         if abs(fraction - 0.5) > abs(y) * _TIE:
             if fraction > 0.5:
                 units += 1
             if units % _UNITS == 0:
-                return int(units // _UNITS)  # 0 for -0.0 too
-            return float(units) / _SCALE
+                return units // _UNITS  # 0 for -0.0 too
+            return units / _SCALE
     r = round(value, PLACES)
     if r == 0:
         return 0
