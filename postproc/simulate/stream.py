@@ -6,7 +6,7 @@ runs a loop a block."""
 
 from __future__ import annotations
 
-from typing import Callable, Final, Iterable, Iterator
+from typing import Callable, Iterable, Iterator
 
 from ..compensation.rules import CutterRules
 from ..context import Context
@@ -15,10 +15,6 @@ from ..ir import Block, Motion
 from .events import HEADER_LOOKAHEAD, header
 from .move_record import Emitted, MoveRecord, move_kind
 from .simulator import Simulator
-
-_SENT: Final = 256
-"""Events ``simulate`` yields before it clears its list of them: a list's ``clear`` (its items' array freed, made
-again at the next append) cost ~360 instructions a block compiled; the events' objects are freed as late."""
 
 
 def _mark_programmed(block: Block, sim: Simulator, out: list[Emitted], programmed: str) -> str:
@@ -106,18 +102,13 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
     append = out.append  # one bound method for the run, not one a block
     programmed = ""
     orientation: Emitted | None = None  # an oriented stop held until what follows it is known (``prepared_taps``)
-    sent = 0  # the events at the head of ``out`` already yielded (cleared ``_SENT`` at a time: ``_SENT``)
     for block in blocks:
         try:
             sim.block(block, append)
         except PostprocError as err:
             report(err.located(ctx.at(block)))
             out.clear()
-            sent = 0
             continue
-        if sent and (holding or mark_held or sim.path_pending or sim.oriented or orientation is not None):
-            del out[:sent]  # the steps below read the block's own events
-            sent = 0
         if sim.path_pending and out and _has_move(out):
             sim.path_at_first_move(block.line)
         if sim.oriented or orientation is not None and out:
@@ -125,8 +116,7 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
             orientation = prepared_taps(out, orientation)
         if mark_held:
             programmed = _mark_programmed(block, sim, out, programmed)
-        n = len(out)
-        if n == sent:
+        if not out:
             continue
         if holding:
             if units is None and _has_move(out):
@@ -141,14 +131,9 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
             yield from held
             held, holding = [], False
         else:
-            for i in range(sent, n):  # compiled, a loop by index: ``yield from`` made an iterator a block
-                yield out[i]
-            if n < _SENT:
-                sent = n
-            else:
-                out.clear()
-                sent = 0
-    del out[:sent]
+            for ev in out:  # compiled, a loop over the list's items: ``yield from`` made an iterator a block
+                yield ev
+            out.clear()
     try:
         sim.finish()
     except PostprocError as err:
