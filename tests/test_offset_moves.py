@@ -33,7 +33,7 @@ def _simulator(pos: dict[str, float], length: float, shift: dict[str, float], fe
     sim.feed = feed
     sim.modal.plane = plane
     events: list[dict[str, object]] = []
-    sim.out = events.append
+    sim.out = events  # type: ignore[assignment]
     return sim, events
 
 

@@ -236,3 +236,44 @@ def test_a_record_run_writes_each_feed_and_kind_it_holds(feeds: list[float | int
     written: list[str] = []
     write_lines(iter(records), written.append, ENCODER)
     assert "".join(written) == "".join(_json(r.event()) + "\n" for r in records)
+
+
+RECORD_NUMBERS = st.one_of(_near_ties().map(num), st.integers(-10**6, 10**6),
+                           st.integers(-10**6, 10**6).map(lambda n: num(n / 1e4)))
+RECORD_KEYS = st.sampled_from([("x", "y", "z"), ("x", "z"), ("x", "y", "z", "a"), ()])
+FEEDS = [1500, 250.5, 1500.0, 0.1234]
+"""Feed objects the records share, as the simulator's moves share the feed in force."""
+
+
+@st.composite
+def _records(draw: st.DrawFn) -> MoveRecord:
+    """A move's record as the simulator makes one: its keys among a few tuples (one a simulation), a line number
+    small or large, a kind, a feed (the same object again, often), a feed mode, a controlled point, an arc's
+    centre."""
+    keys = draw(RECORD_KEYS)
+    point = [draw(RECORD_NUMBERS) for _ in keys]
+    kind = draw(st.sampled_from(["rapid", "feed", "cw", "ccw", "tap"]))
+    arc = kind in ("cw", "ccw")
+    centre_keys = ("cx", "cy", "cz") if arc else ()
+    controlled = draw(st.one_of(st.none(), st.just([draw(RECORD_NUMBERS) if draw(st.booleans()) else v
+                                                    for v in point])))
+    return MoveRecord(draw(st.one_of(st.integers(0, 2000), st.integers(0, 10**7))), kind, keys, point,
+                      draw(st.one_of(st.none(), st.sampled_from(FEEDS), RECORD_NUMBERS)),
+                      draw(st.sampled_from([None, None, "per_rev", "inverse_time"])), controlled, centre_keys,
+                      [draw(RECORD_NUMBERS) for _ in centre_keys] if arc else None,
+                      draw(st.sampled_from(["XY", "ZX"])) if arc else None,
+                      [draw(RECORD_NUMBERS) for _ in centre_keys] if arc and controlled is not None else None)
+
+
+@settings(max_examples=500, deadline=None)
+@given(records=st.lists(_records(), min_size=1, max_size=30))
+def test_write_lines_writes_records_as_json_writes_their_events(records: list[MoveRecord]) -> None:
+    """``write_lines`` writes a record by field, its line number's digits joined with its kind, its feed with the
+    controlled point's first key, its last short fraction with its closing (``event_text._KeyTexts``,
+    ``_CLOSING``): each line is json's text of the record's ``event()``, the record alone (``event_text``)
+    too."""
+    written: list[str] = []
+    write_lines(iter(records), written.append, ENCODER)
+    assert "".join(written) == "".join(_json(r.event()) + "\n" for r in records)
+    for r in records:
+        assert event_text(r, ENCODER) == _json(r.event())

@@ -124,6 +124,7 @@ class ProgramInfo:
             self.pos = {k.lower(): v for k, v in start_position(self.setup).items()}
             self.tally: _Tally | None = None
             out: list[Emitted] = []  # (dictionaries: this simulator makes no records)
+            sim.out = out  # where it releases events: the block's own
             for block in lowered:
                 mode = block.sections.get("SpindleMode")
                 if mode is not None:
@@ -136,7 +137,6 @@ class ProgramInfo:
                     self.event(as_event(ev), sim)
                 out.clear()
             try:
-                sim.out = out.append
                 sim.finish()
             except PostprocError as err:
                 diagnostics.error(err)

@@ -18,7 +18,7 @@ from ..geometry.arcs import CENTRE_KEYS
 from ..ir import Block
 from ..lowering.inverse_time import move_length
 from ..ir.state import PLANE_AXES
-from .events import CUTTER_RADIUS, LATHE_TOOL_OFFSET, TOOL_LENGTH, Event, num
+from .events import CUTTER_RADIUS, LATHE_TOOL_OFFSET, TOOL_LENGTH, Event, differs, num
 from .move_record import Emitted, MoveRecord
 from .position import LENGTH_AXIS, Position, point_dict
 
@@ -294,9 +294,9 @@ class CompensatedMoves(Position):
             crounded.append(c)  # more, a list repeated through Python; callgrind, branch simfast3)
             if not moved:  # (identity first: an axis that stays keeps its number's object; never a nan)
                 b = before[i]
-                if c is not b and c != b:
+                if c is not b and differs(c, b):
                     moved = True
-            if not apart and c is not r and c != r:
+            if not apart and c is not r and differs(c, r):
                 apart = True
         if kind != "rapid":  # a move it drops fixes the header's feed mode too, as ``_compensated``'s
             f = self._feed_value()
@@ -307,7 +307,7 @@ class CompensatedMoves(Position):
             return
         self.at, self.rounded, self.crounded = target, point, crounded
         record = MoveRecord(line, kind, self.key_names, point, f, mode, crounded if apart else None)
-        self.out(record if self.records else record.event())
+        self.out.append(record if self.records else record.event())
         self._settle()
 
     def _offset_arc(self, kind: str, target: list[float], line: int, c: tuple[float, float], plane: str) -> None:
@@ -356,7 +356,7 @@ class CompensatedMoves(Position):
         self.at, self.rounded, self.crounded = target, rounded, crounded
         record = MoveRecord(line, kind, self.key_names, rounded, f, mode, crounded if apart else None,
                             self.centre_keys, written, plane, cwritten if apart else None)
-        self.out(record if self.records else record.event())
+        self.out.append(record if self.records else record.event())
         self._settle()
 
     def _cutter_idle(self) -> bool:
@@ -371,13 +371,13 @@ class CompensatedMoves(Position):
         if self.cutter is not None:
             self.cutter.event(ev.event() if isinstance(ev, MoveRecord) else ev)
         else:
-            self.out(ev)
+            self.out.append(ev)
 
     def _release(self, item: Item) -> None:
         if isinstance(item, Segment):
             self._write(item)
         else:
-            self.out(item)
+            self.out.append(item)
 
     def _write(self, seg: Segment) -> None:
         """A compensated move as its event: the programmed point in the usual keys, the controlled one in
@@ -425,7 +425,7 @@ class CompensatedMoves(Position):
                 ev[key] = value
         if any(ev[key] != value for key, value in ctrl.items()):
             ev["controlled"] = ctrl
-        self.out(ev)
+        self.out.append(ev)
 
     def _settle(self) -> None:
         """Leave the compensation once nothing offsets the tool and it stands at the programmed point."""

@@ -16,9 +16,9 @@ The line is one list of pieces joined once: a key with the separator (or the ope
 number's whole part, its decimals from tables (one piece where they are at most four, as a CAM program's are;
 else the first three and the rest), the closing brace with the line end (no string is built per number, none
 per item; compiled, building a string costs ~500 instructions, an append ~50, and each piece ~90 more in the
-join and the list's clearing). A move record's fixed texts are fewer pieces still: its kind with its key, its
-feed with its key (spelt once while the feed stays), the controlled point's key with its first axis, its two
-closing braces with the line end.
+join and the list's clearing). A move record's fixed texts are fewer pieces still: its line number's last digits
+with its kind and their keys, its feed with its key (spelt once while the feed stays) and with the controlled
+point's key and first axis, its last short fraction with the two closing braces and the line end.
 """
 
 from __future__ import annotations
@@ -225,8 +225,9 @@ _KEY_CONTROLLED: Final = ', "controlled": '
 @mypyc_attr(allow_interpreted_subclasses=True)
 class _KeyTexts:
     """The texts of a record's axis keys (``MoveRecord.keys``: one tuple a simulation), kept for the tuple met last,
-    and the texts of the kind and feed met last: each a fixed key joined with its value, one piece of the line
-    where there were two (and ``str`` of the feed made once, not at every move)."""
+    and the texts of the kind and feed met last: each a fixed key joined with its value, and with the piece of the
+    line next to it, one piece of the line where there were two (and ``str`` of the feed made once, not at every
+    move)."""
 
     def __init__(self) -> None:
         self.keys: tuple[str, ...] = ()
@@ -236,17 +237,62 @@ class _KeyTexts:
         """Each key as the controlled point's, the first with the ``controlled`` key and the object's brace before
         it (``', "controlled": {"x": '``), the others as ``later``."""
         self.kind: str | None = None
-        self.kind_text = ""
-        """``', "move": "feed"'`` for the kind ``kind``."""
+        self.kind_texts = _KindTexts("")
+        """The texts of the kind ``kind`` (``', "move": "feed"'``, with the line number before it)."""
+        self.kinds: dict[str, _KindTexts] = {}
+        """Each kind met -> its texts (a program's moves alternate between a few kinds)."""
         self.f: object = None
         self.f_text = ""
         """``', "f": 1500'`` for the feed object ``f`` (a feed changes rarely: the simulator writes one object)."""
+        self.f_first = _KeyedNumbers("")
+        """``f_text`` joined with the controlled point's first key (``', "f": 1500, "controlled": {"x": '``) and the
+        whole parts after it, for the keys ``keys``."""
+        self.f_firsts: dict[str, _KeyedNumbers] = {}
+        """Each ``f_first`` made for ``keys``, by its text (a program's feeds are a few, met again and again)."""
 
     def update(self, keys: tuple[str, ...]) -> None:
         self.keys = keys
         self.later = [_KeyedNumbers(_key_text(key, True)) for key in keys]
         self.first = [_KeyedNumbers(_KEY_CONTROLLED + _key_text(key, False) if i == 0 else _key_text(key, True))
                       for i, key in enumerate(keys)]
+        self.f_firsts = {}
+        self.f = None  # (``f_first`` is made again for these keys)
+
+    def kind_of(self, kind: str) -> _KindTexts:
+        """The texts of ``kind``, kept as ``kind_texts``."""
+        texts = self.kinds.get(kind)
+        if texts is None:
+            word = _WORDS.get(kind)
+            texts = _KindTexts(_KEY_MOVE + (word if word is not None else _word_text(kind)))
+            self.kinds[kind] = texts
+        self.kind = kind
+        self.kind_texts = texts
+        return texts
+
+    def feed(self, f: float | int) -> None:
+        """Spell the feed ``f`` (``f_text``, ``f_first``), kept for the object ``f``."""
+        spelt: list[str] = [_KEY_F]
+        _number_parts(f, spelt)
+        text = "".join(spelt)
+        self.f_text = text
+        first = self.f_firsts.get(text)
+        if first is None:
+            first = _KeyedNumbers(text + self.first[0].text if self.first else text)
+            self.f_firsts[text] = first
+        self.f_first = first
+        self.f = f
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class _KindTexts:
+    """A move kind's text (``', "move": "feed"'``) joined with the line number before it: ``'{"line": 80, "move":
+    "feed"'`` for a line below ``_TABLED``, the last three digits with it (``'345, "move": "feed"'``) for one below
+    ``_LINES_TABLED`` (``_LINE_HIGH`` before them); each made the first time met."""
+
+    def __init__(self, text: str) -> None:
+        self.text = text
+        self.low: list[str | None] = [None] * _TABLED
+        self.padded: list[str | None] = [None] * _TABLED
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -288,7 +334,7 @@ def _keyed_number_parts(value: float | int, keyed: _KeyedNumbers, parts: list[st
     """A record's key and its number as json writes them (``keyed.text``, then ``_number_parts``), the key and the
     number's whole part in one piece where it is tabled (``_KeyedNumbers``)."""
     if isinstance(value, float):
-        _keyed_float_parts(value, keyed, parts)
+        _keyed_float_parts(value, keyed, parts, None)
     elif 0 <= value < _TABLED:
         parts.append(keyed.whole(value, False))
     elif -_TABLED < value < 0:
@@ -298,9 +344,10 @@ def _keyed_number_parts(value: float | int, keyed: _KeyedNumbers, parts: list[st
         parts.append(str(value))
 
 
-def _keyed_float_parts(value: float, keyed: _KeyedNumbers, parts: list[str]) -> None:
+def _keyed_float_parts(value: float, keyed: _KeyedNumbers, parts: list[str], tail: _Tail | None) -> None:
     """``_keyed_number_parts`` of a float (a float parameter: compiled, unboxed once, where a union's value was
-    unboxed again at each comparison; the units machine integers, ``i64``, not tagged ones checked at each step)."""
+    unboxed again at each comparison; the units machine integers, ``i64``, not tagged ones checked at each step).
+    ``tail``: the fixed text that follows the number (``_CLOSING``), a short fraction joined with it in one piece."""
     if _SMALLEST <= value < _LARGEST or -_LARGEST < value <= -_SMALLEST:  # (as ``_float_parts``)
         units = i64(value * _SCALE + (0.5 if value > 0.0 else -0.5))
         if float(units) / _SCALE == value:
@@ -313,45 +360,75 @@ def _keyed_float_parts(value: float, keyed: _KeyedNumbers, parts: list[str]) -> 
                 fraction = magnitude - whole * _UNITS
                 if fraction % _SHORT_STEP == 0:  # ``_fraction_parts``' first case here: a call less a number
                     index = fraction // _SHORT_STEP
-                    text = _SHORT[index]
-                    parts.append(text if text is not None else _short_text(index))
-                else:
-                    _fraction_parts(fraction, parts)
+                    if tail is None:
+                        text = _SHORT[index]
+                        parts.append(text if text is not None else _short_text(index))
+                    else:
+                        text = tail.shorts[index]
+                        parts.append(text if text is not None else tail.short(index))
+                    return
+                _fraction_parts(fraction, parts)
+                if tail is not None:
+                    parts.append(tail.text)
                 return
     parts.append(keyed.text)
     _float_parts(value, parts)
+    if tail is not None:
+        parts.append(tail.text)
 
 
-_LINE_LOW: Final[list[str | None]] = [None] * _TABLED
-"""A line number below ``_TABLED`` -> the line's opening text with it (``'{"line": 80'``), made the first time met."""
+@mypyc_attr(allow_interpreted_subclasses=True)
+class _Tail:
+    """A fixed text that follows a number in a line (a record's closing), and ``_SHORT``'s fractions joined with it
+    (``shorts``, each made the first time met): one piece where there were two."""
+
+    def __init__(self, text: str) -> None:
+        self.text = text
+        self.shorts: list[str | None] = [None] * (_UNITS // _SHORT_STEP)
+
+    def short(self, index: i64) -> str:
+        """The point and the decimals of ``index`` ten-thousandths followed by ``text``, kept in ``shorts``."""
+        short = _SHORT[index]
+        text = (short if short is not None else _short_text(index)) + self.text
+        self.shorts[index] = text
+        return text
+
+
 _LINE_HIGH: Final[list[str | None]] = [None] * _TABLED
 """A line number's thousands (from 1) -> the line's opening text with them (``'{"line": 12'`` for 12,345), made the
-first time met; ``_PADDED`` follows with the last three digits."""
+first time met; ``_KindTexts.padded`` follows with the last three digits and the kind."""
 _PADDED: Final = [f"{n:03d}" for n in range(_TABLED)]
 _LINES_TABLED: Final = _TABLED * _TABLED
 
 
-def _line_parts(line: int, parts: list[str]) -> None:
-    """Append a record's opening brace with its ``line`` item (``'{"line": 12345'``): from tables, one piece below
-    ``_TABLED`` and two below ``_LINES_TABLED``, where ``str`` of the number cost ~220 instructions a line
-    (compiled; a line has a new number)."""
+def _line_kind_parts(line: int, kind: _KindTexts, parts: list[str]) -> None:
+    """Append a record's opening brace with its ``line`` and ``move`` items (``'{"line": 12345, "move": "feed"'``):
+    from tables, one piece for a line below ``_TABLED`` and two below ``_LINES_TABLED``, where ``str`` of the number
+    cost ~220 instructions a line (compiled; a line has a new number) and each piece ~110 in the append, the join
+    and the list's clearing."""
     if 0 <= line < _TABLED:
-        text = _LINE_LOW[line]
+        text = kind.low[line]
         if text is None:
-            text = _KEYS_LINE + _WHOLE[line]
-            _LINE_LOW[line] = text
+            text = _KEYS_LINE + _WHOLE[line] + kind.text
+            kind.low[line] = text
         parts.append(text)
     elif _TABLED <= line < _LINES_TABLED:
         high = line // _TABLED
-        text = _LINE_HIGH[high]
+        head = _LINE_HIGH[high]
+        if head is None:
+            head = _KEYS_LINE + _WHOLE[high]
+            _LINE_HIGH[high] = head
+        parts.append(head)
+        low = line - high * _TABLED
+        text = kind.padded[low]
         if text is None:
-            text = _KEYS_LINE + _WHOLE[high]
-            _LINE_HIGH[high] = text
+            text = _PADDED[low] + kind.text
+            kind.padded[low] = text
         parts.append(text)
-        parts.append(_PADDED[line - high * _TABLED])
     else:
         parts.append(_KEYS_LINE)
         parts.append(str(line))
+        parts.append(kind.text)
 
 
 _CLOSE: Final = "}"
@@ -360,6 +437,9 @@ _CLOSE_BOTH: Final = "}}"
 _CLOSE_BOTH_LINE: Final = "}}\n"
 """A record's closing text: the event's brace (with the line end where ``write_lines`` writes it), after the
 controlled point's brace where it has one (one piece)."""
+_CLOSING: Final = _Tail(_CLOSE_BOTH_LINE)
+"""The closing of a line that ends with its controlled point (a CAM program's moves under a tool length), joined
+with its last short fraction."""
 
 
 def _record_parts(record: MoveRecord, parts: list[str], line_end: bool) -> None:
@@ -370,19 +450,14 @@ def _record_parts(record: MoveRecord, parts: list[str], line_end: bool) -> None:
     keys = record.keys
     if keys is not texts.keys:
         texts.update(keys)
-    _line_parts(record.line, parts)
     kind = record.kind
-    if kind is not texts.kind:
-        word = _WORDS.get(kind)
-        texts.kind_text = _KEY_MOVE + (word if word is not None else _word_text(kind))
-        texts.kind = kind
-    parts.append(texts.kind_text)
+    _line_kind_parts(record.line, texts.kind_texts if kind is texts.kind else texts.kind_of(kind), parts)
     later = texts.later
     point = record.point
     for i in range(len(keys)):
         value = point[i]
         if isinstance(value, float):  # (most often: the float's own call, not through the union's)
-            _keyed_float_parts(value, later[i], parts)
+            _keyed_float_parts(value, later[i], parts, None)
         else:
             _keyed_number_parts(value, later[i], parts)
     centre = record.centre
@@ -395,18 +470,19 @@ def _record_parts(record: MoveRecord, parts: list[str], line_end: bool) -> None:
         plane = record.plane
         parts.append("null" if plane is None else _word_text(plane))
     f = record.f
+    mode = record.feed_mode
+    controlled = record.controlled
+    joined = False  # the feed's text joined with the controlled point's first key (``_KeyTexts.f_first``)
     if f is not None:
         if f is not texts.f:  # (identity: the same object has the same text; an equal one is spelt again)
-            spelt: list[str] = [_KEY_F]
-            _number_parts(f, spelt)
-            texts.f_text = "".join(spelt)
-            texts.f = f
-        parts.append(texts.f_text)
-    mode = record.feed_mode
+            texts.feed(f)
+        if mode is None and controlled is not None and len(keys) > 0:
+            joined = True
+        else:
+            parts.append(texts.f_text)
     if mode is not None:
         parts.append(_KEY_FEED_MODE)
         parts.append(_word_text(mode))
-    controlled = record.controlled
     if controlled is None:
         parts.append(_CLOSE_LINE if line_end else _CLOSE)
         return
@@ -418,12 +494,21 @@ def _record_parts(record: MoveRecord, parts: list[str], line_end: bool) -> None:
             parts.append(_CLOSE_LINE if line_end else _CLOSE)
             return
     first = texts.first
+    last = len(keys) - 1 if line_end and ccentre is None else -1  # the number the closing follows (-1: none)
     for i in range(len(keys)):
         value = controlled[i]
+        keyed = texts.f_first if joined and i == 0 else first[i]
+        if i == last:
+            if isinstance(value, float):
+                _keyed_float_parts(value, keyed, parts, _CLOSING)
+            else:
+                _keyed_number_parts(value, keyed, parts)
+                parts.append(_CLOSE_BOTH_LINE)
+            return
         if isinstance(value, float):
-            _keyed_float_parts(value, first[i], parts)
+            _keyed_float_parts(value, keyed, parts, None)
         else:
-            _keyed_number_parts(value, first[i], parts)
+            _keyed_number_parts(value, keyed, parts)
     if ccentre is not None:
         centre_keys = record.centre_keys
         for i in range(len(centre_keys)):

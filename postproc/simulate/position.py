@@ -32,6 +32,9 @@ LENGTH_AXIS: Final = _AXIS
 LINEAR_AXES: Final = _LINEAR
 # Final: compiled, a C constant, not a look-up in the module's dictionary (every move reads them)
 _NAN: Final = math.nan
+_A: Final = 65
+"""``ord("A")``."""
+_LETTERS: Final = 26
 PATH_CONTROL: Final = "path control"
 """The setting a path control mode is recorded as (``postproc.simulate.events.UNSIMULATED``)."""
 _INITIAL_SETTINGS = {"cutter compensation": "off", "work offset": "1", LATHE_TOOL_OFFSET: "cancel"}
@@ -77,6 +80,13 @@ class Position:
         the readers that are not hot."""
         self.index = {a: i for i, a in enumerate(self.axes)}
         """Machine axis -> its place in ``axes`` (and in ``at`` and the rounded points)."""
+        self.places: list[int] = [-1] * _LETTERS
+        """``index`` of the axes named by one letter A-Z, by the letter's place in the alphabet (-1: not an axis):
+        ``target`` reads an axis word's place by its letter's code (compiled, a few instructions), where a look-up of
+        the string cost ~130 a word (~300 a block, and as much again for each side of ``verify``)."""
+        for i, a in enumerate(self.axes):
+            if len(a) == 1 and 0 <= ord(a) - _A < _LETTERS:
+                self.places[ord(a) - _A] = i
         self.length_index = self.index.get(LENGTH_AXIS, -1)
         """The place of the tool length's axis in ``axes`` (-1: the machine has none)."""
         self.rounded: list[float | int] = [num(v) for v in self.at]
@@ -184,8 +194,10 @@ class Position:
         queue, or the controlled point has not yet met the programmed one again)."""
         self.crounded = list(self.rounded)
         """The controlled point of the last move written, rounded (while ``compensating``), as ``rounded``."""
-        self.out: Callable[[Emitted], None] = _nowhere
-        """Where released events go (the ``emit`` of the block being run)."""
+        self.out: list[Emitted] = []
+        """Where released events go: the list the block being run emits into (set once a run by its loop,
+        ``simulate``; a list, not its bound ``append``: compiled, an append to a typed list is a C call where calling
+        a bound method went through Python's vector call, ~110 instructions a move)."""
         self.queued: Callable[[Emitted], None] = _nowhere
         """``CompensatedMoves._event`` bound once: a block's events while compensating (a bound method made per
         block cost ~340 instructions)."""
@@ -237,6 +249,7 @@ class Position:
         increments = self.increments if len(self.increments) else None  # empty on a mill: tested once, not a word
         factors = self.factors
         index = self.index
+        places = self.places
         for axis, value in axes.items():
             if not isinstance(value, float) and isinstance(value, Expr):  # a float first: one type test a word
                 raise ProgramError(UNEVALUATED, self._at(block, axis))
@@ -249,8 +262,9 @@ class Position:
                 v = value * self.scale * (0.5 if self.diameter and real == "X" else 1.0)
                 out[r] = out[r] + v
                 continue
-            i = index.get(axis, -1)  # (a look-up: an identity scan of ``axes`` cost verify more, callgrind
-            if i < 0:  # simfast6: a LinuxCNC translation's letters are not the set-up's string objects)
+            n = ord(axis) - _A if len(axis) == 1 else -1  # (a letter's place, not a look-up: ``places``)
+            i = places[n] if 0 <= n < _LETTERS else index.get(axis, -1)
+            if i < 0:
                 raise ProgramError(f"axis {axis} is not on this machine (axes {''.join(self.axes)})",
                                    self._at(block, axis))
             v = value * factors[i]

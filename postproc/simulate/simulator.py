@@ -100,7 +100,6 @@ class Simulator(Moves):
         self.current = block
         if rare and "InProfile" in sections:
             return  # the controller runs a profile block only through its cycle
-        self.out = emit
         if self.compensating:
             emit = self.queued
         native = sections.get("NativeCode") if rare else None
@@ -451,7 +450,7 @@ class Simulator(Moves):
             if self.mark_held:
                 legs: list[Emitted] = []
                 out = self.out
-                self.out = legs.append  # a compensated leg (a tool length in force) comes through ``out``
+                self.out = legs  # a compensated leg (a tool length in force) comes through ``out``
                 try:
                     self.line_move("rapid", ref, line, legs.append)
                 finally:
@@ -461,7 +460,7 @@ class Simulator(Moves):
                     ev = leg.event() if isinstance(leg, MoveRecord) else leg  # (a ``mark_held`` run makes none)
                     if ev.get("line") == line:  # (not a move of an earlier block the cutter queue lets go now)
                         ev["held"] = held
-                    out(ev)
+                    out.append(ev)
             else:
                 self.line_move("rapid", ref, line, emit)
             return

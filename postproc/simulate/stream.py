@@ -98,6 +98,7 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
     holding = True
     units: str | None = None  # the program's units at its first move, for the header
     out: list[Emitted] = []
+    sim.out = out  # where the simulator releases events: the block's own, as ``append`` emits them
     append = out.append  # one bound method for the run, not one a block
     programmed = ""
     orientation: Emitted | None = None  # an oriented stop held until what follows it is known (``prepared_taps``)
@@ -134,7 +135,6 @@ def simulate(blocks: Iterable[Block], ctx: Context, live_after_end: list[int] | 
                 yield ev
             out.clear()
     try:
-        sim.out = out.append
         sim.finish()
     except PostprocError as err:
         report(err.located(ctx.at(sim.current)) if sim.current is not None else err)
