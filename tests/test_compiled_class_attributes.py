@@ -10,6 +10,7 @@ interpreted subclasses to that: statically in both builds, and on the compiled t
 from __future__ import annotations
 
 import ast
+import functools
 import importlib
 import tomllib
 from pathlib import Path
@@ -22,16 +23,21 @@ ROOT = Path(__file__).resolve().parents[1]
 HOT = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["tool"]["postproc"]["compiled"]
 
 
+@functools.cache
+def _all_classes() -> tuple[tuple[ast.ClassDef, str], ...]:
+    """Every class of the core, dialects and plugins, with its source, in file order: parsed once for
+    the scans below (each parsed every file again, twice for one of them: ~8 s of CPU between them)."""
+    return tuple((node, str(path.relative_to(ROOT)))
+                 for folder in ("postproc", "dialects", "plugins") for path in sorted((ROOT / folder).rglob("*.py"))
+                 for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))) if isinstance(node, ast.ClassDef))
+
+
 def _classes() -> dict[str, tuple[ast.ClassDef, str]]:
-    """Every class of the core, dialects and plugins by name (the last one of a name wins: names used
+    """Every class of the core, dialects and plugins by name (the first one of a name wins: names used
     as bases here are unique), with its source."""
     found: dict[str, tuple[ast.ClassDef, str]] = {}
-    for folder in ("postproc", "dialects", "plugins"):
-        for path in sorted((ROOT / folder).rglob("*.py")):
-            tree = ast.parse(path.read_text(encoding="utf-8"))
-            for node in ast.walk(tree):
-                if isinstance(node, ast.ClassDef):
-                    found.setdefault(node.name, (node, str(path.relative_to(ROOT))))
+    for node, source in _all_classes():
+        found.setdefault(node.name, (node, source))
     return found
 
 
@@ -64,15 +70,10 @@ def _first_declaration(cls: ast.ClassDef, name: str, classes: dict[str, tuple[as
 def _compiled_open_classes() -> list[tuple[ast.ClassDef, str]]:
     """The classes of the compiled modules that allow interpreted subclasses (plugins extend them);
     protocols are no native classes (they only declare)."""
-    out = []
-    for source in HOT:
-        tree = ast.parse((ROOT / source).read_text(encoding="utf-8"))
-        for node in ast.walk(tree):
-            if isinstance(node, ast.ClassDef) and any(
-                    "allow_interpreted_subclasses=True" in ast.unparse(d) for d in node.decorator_list) \
-                    and not any(ast.unparse(b).endswith("Protocol") for b in node.bases):
-                out.append((node, source))
-    return out
+    hot = set(HOT)
+    return [(node, source) for node, source in _all_classes() if source in hot and any(
+            "allow_interpreted_subclasses=True" in ast.unparse(d) for d in node.decorator_list)
+            and not any(ast.unparse(b).endswith("Protocol") for b in node.bases)]
 
 
 def test_constants_of_open_compiled_classes_are_class_attributes() -> None:
@@ -129,11 +130,7 @@ def test_no_subclass_overrides_a_static_method_of_an_open_compiled_class() -> No
     plugin's override is never reached (LinuxCNC's ``_path_tolerance`` read no ``G64 P Q`` so). Such a
     helper a subclass overrides must be a plain method."""
     classes = _classes()
-    everything = []
-    for folder in ("postproc", "dialects", "plugins"):
-        for path in sorted((ROOT / folder).rglob("*.py")):
-            tree = ast.parse(path.read_text(encoding="utf-8"))
-            everything += [(node, str(path.relative_to(ROOT))) for node in ast.walk(tree) if isinstance(node, ast.ClassDef)]
+    everything = _all_classes()
     wrong = []
     for cls, source in _compiled_open_classes():
         statics = _static_names(cls)
