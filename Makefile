@@ -61,6 +61,8 @@ run: bytecode
 # The whole suite against the compiled hot path, then against the pure-Python fallback (skipped where
 # nothing was compiled: the first run was pure already). Each run spreads its tests over every core
 # (pytest-xdist; JOBS=1 runs them in one process); a worker idle at the end takes tests from a busy one.
+# The second run skips the tests marked one_build, the same in both builds (they run no compiled module:
+# tests/conftest.py), with POSTPROC_SECOND_BUILD=1.
 # A plugin's own suite (plugins/*/tests: the conformance suite with the settings of its pyproject.toml,
 # about 8 s of CPU for the example plugin) runs from its folder, after the core's.
 JOBS ?= auto
@@ -70,8 +72,8 @@ test: install
 	$(BIN)/postproc --version
 	$(PYTEST) && for p in $(PLUGIN_TESTS); do (cd $$p && $(PYTEST)) || exit 1; done
 	if [ -f postproc/_compiled/manifest.txt ]; then \
-	  POSTPROC_PURE=1 $(BIN)/postproc --version && POSTPROC_PURE=1 $(PYTEST) && \
-	  for p in $(PLUGIN_TESTS); do (cd $$p && POSTPROC_PURE=1 $(PYTEST)) || exit 1; done; fi
+	  POSTPROC_PURE=1 $(BIN)/postproc --version && POSTPROC_PURE=1 POSTPROC_SECOND_BUILD=1 $(PYTEST) && \
+	  for p in $(PLUGIN_TESTS); do (cd $$p && POSTPROC_PURE=1 POSTPROC_SECOND_BUILD=1 $(PYTEST)) || exit 1; done; fi
 
 bench: compile
 	$(BIN)/pip install --quiet -r benchmarks/requirements.txt

@@ -20,6 +20,7 @@ import pytest
 from postproc import native
 
 ROOT = Path(__file__).resolve().parents[1]
+STATIC = pytest.mark.one_build(reason="a scan of the source files (ast): the compiled types are looked at below")
 HOT = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["tool"]["postproc"]["compiled"]
 
 
@@ -76,6 +77,7 @@ def _compiled_open_classes() -> list[tuple[ast.ClassDef, str]]:
             and not any(ast.unparse(b).endswith("Protocol") for b in node.bases)]
 
 
+@STATIC
 def test_constants_of_open_compiled_classes_are_class_attributes() -> None:
     """An UPPER_CASE attribute of a compiled class that plugins subclass is declared ``ClassVar`` or
     ``Final`` (here or in a base), never a bare or annotated instance default."""
@@ -94,6 +96,7 @@ def test_constants_of_open_compiled_classes_are_class_attributes() -> None:
     assert not wrong, "declare these ClassVar (compiled, a subclass's value is not read):\n" + "\n".join(wrong)
 
 
+@STATIC
 def test_the_scan_finds_a_bare_constant() -> None:
     """The scan above flags the declaration that broke the compiled LinuxCNC reader."""
     tree = ast.parse("class Base:\n    X: ClassVar[int] = 1\nclass R(Base):\n    DIALECT = ''\n    X = 2\n")
@@ -125,6 +128,7 @@ def _static_names(cls: ast.ClassDef) -> set[str]:
     return statics & called
 
 
+@STATIC
 def test_no_subclass_overrides_a_static_method_of_an_open_compiled_class() -> None:
     """Compiled, ``self.helper()`` of a static (or class) method calls the base's own function directly: a
     plugin's override is never reached (LinuxCNC's ``_path_tolerance`` read no ``G64 P Q`` so). Such a
@@ -144,6 +148,7 @@ def test_no_subclass_overrides_a_static_method_of_an_open_compiled_class() -> No
     assert not wrong, "\n".join(wrong)
 
 
+@STATIC
 def test_the_scan_finds_an_overridden_static_method() -> None:
     tree = ast.parse("class Base:\n    @staticmethod\n    def helper() -> None: ...\n"
                      "    def run(self) -> None:\n        self.helper()\n"
