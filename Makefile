@@ -20,15 +20,13 @@ NATIVE := $(VENV)/.compiled
 TOML = $(PYTHON) -c 'import tomllib; t = tomllib.load(open("pyproject.toml", "rb")); print(" ".join(chr(39) + r + chr(39) for r in $(1)))'
 BUILD_REQUIRES = $(shell $(call TOML,t["build-system"]["requires"]))
 SETUPTOOLS = $(shell $(call TOML,t["build-system"]["requires"] if r.startswith("setuptools")))
-# What the suite, the pictures and the cluster runs add (pyproject.toml's extras test, render, dask).
-EXTRAS = $(shell $(call TOML,sum((t["project"]["optional-dependencies"][k] for k in ("test"$(comma) "render"$(comma) "dask"))$(comma) [])))
-comma := ,
 
 # Each step says what it does and, when done, how long it took (wall seconds: on a loaded machine CPU
 # seconds are the figure to compare, docs/compiled.md).
 # `make run` needs only the first: postproc and its plugins (pure Python) with their dependencies, and the
 # setuptools their editable install builds with; the build tools and the extras are half the venv's CPU
-# time (docs/benchmarks.md, branch suitetime) and come with the second, which compiling and the suite need.
+# time (docs/benchmarks.md, branch suitetime). The second, which compiling and the suite need, installs
+# everything (and so counts as the first too): a venv made before the split stays valid, nothing compiles again.
 $(RUNTIME): pyproject.toml setup.py $(PLUGINS)
 	@echo "make: [venv] creating $(VENV): postproc and its plugins (pure Python) with their dependencies"
 	@start=$$(date +%s) && set -x && \
@@ -38,12 +36,14 @@ $(RUNTIME): pyproject.toml setup.py $(PLUGINS)
 	{ set +x; } 2>/dev/null && echo "make: [venv] $(VENV) made in $$(( $$(date +%s) - start )) s"
 	touch $(RUNTIME)
 
-$(STAMP): $(RUNTIME)
-	@echo "make: [tools] adding the build tools (mypy) and what the suite needs (pytest, hypothesis, pillow, dask)"
+$(STAMP): pyproject.toml setup.py $(PLUGINS)
+	@echo "make: [venv] creating $(VENV): postproc, its plugins, their dependencies, the build tools (mypy) and what the suite needs (pytest, hypothesis, pillow, dask)"
 	@start=$$(date +%s) && set -x && \
-	$(BIN)/pip install --quiet $(BUILD_REQUIRES) $(EXTRAS) && \
-	{ set +x; } 2>/dev/null && echo "make: [tools] added in $$(( $$(date +%s) - start )) s"
-	touch $(STAMP)
+	$(PYTHON) -m venv $(VENV) && \
+	$(BIN)/pip install --quiet $(BUILD_REQUIRES) && \
+	POSTPROC_PURE=1 PYTHONWARNINGS=ignore::UserWarning $(BIN)/pip install --quiet --no-build-isolation -e '.[test,render,dask]' $(foreach p,$(PLUGINS),-e $(dir $(p))) && \
+	{ set +x; } 2>/dev/null && echo "make: [venv] $(VENV) made in $$(( $$(date +%s) - start )) s"
+	touch $(STAMP) $(RUNTIME)
 
 # Compiles the hot path (pure Python where there is no C compiler), again when a hot module is edited
 # (meanwhile postproc runs it as pure Python: postproc --version says which). mypyc type-checks and writes
