@@ -27,13 +27,17 @@ SETUPTOOLS = $(shell $(call TOML,t["build-system"]["requires"] if r.startswith("
 # setuptools their editable install builds with; the build tools and the extras are half the venv's CPU
 # time (docs/benchmarks.md, branch suitetime). The second, which compiling and the suite need, installs
 # everything (and so counts as the first too): a venv made before the split stays valid, nothing compiles again.
+# A venv whose .venv/.installed is newer than these files (made before the split) has it all already: it is
+# not installed again, which would also remove its compiled tree (a pure install does) behind make's back.
 $(RUNTIME): pyproject.toml setup.py $(PLUGINS)
-	@echo "make: [venv] creating $(VENV): postproc and its plugins (pure Python) with their dependencies"
-	@start=$$(date +%s) && set -x && \
+	@if [ -f $(STAMP) ] && [ -z "$$(find pyproject.toml setup.py $(PLUGINS) -newer $(STAMP))" ]; then \
+	  echo "make: [venv] $(VENV) is there (.venv/.installed)"; else \
+	echo "make: [venv] creating $(VENV): postproc and its plugins (pure Python) with their dependencies" && \
+	start=$$(date +%s) && set -x && \
 	$(PYTHON) -m venv $(VENV) && \
 	$(BIN)/pip install --quiet $(SETUPTOOLS) && \
 	POSTPROC_PURE=1 PYTHONWARNINGS=ignore::UserWarning $(BIN)/pip install --quiet --no-build-isolation -e . $(foreach p,$(PLUGINS),-e $(dir $(p))) && \
-	{ set +x; } 2>/dev/null && echo "make: [venv] $(VENV) made in $$(( $$(date +%s) - start )) s"
+	{ set +x; } 2>/dev/null && echo "make: [venv] $(VENV) made in $$(( $$(date +%s) - start )) s"; fi
 	touch $(RUNTIME)
 
 $(STAMP): pyproject.toml setup.py $(PLUGINS)
