@@ -4,6 +4,7 @@
 PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
+RUNTIME := $(VENV)/.runtime
 STAMP  := $(VENV)/.installed
 PLUGINS := $(wildcard plugins/*/pyproject.toml)
 # The hot modules compiled with mypyc (pyproject.toml [tool.postproc] compiled) and the stamp of their build.
@@ -16,18 +17,37 @@ NATIVE := $(VENV)/.compiled
 # installed into the venv once, so that no pip install below makes a throw-away build environment of its
 # own (two of them on a fresh machine, each fetching mypy) and the compile step starts at once. Built in the
 # venv, setuptools' warning that an editable install is editable would print a box per package: silenced.
-BUILD_REQUIRES = $(shell $(PYTHON) -c 'import tomllib; print(" ".join(chr(39) + r + chr(39) for r in tomllib.load(open("pyproject.toml", "rb"))["build-system"]["requires"]))')
+TOML = $(PYTHON) -c 'import tomllib; t = tomllib.load(open("pyproject.toml", "rb")); print(" ".join(chr(39) + r + chr(39) for r in $(1)))'
+BUILD_REQUIRES = $(shell $(call TOML,t["build-system"]["requires"]))
+SETUPTOOLS = $(shell $(call TOML,t["build-system"]["requires"] if r.startswith("setuptools")))
 
 # Each step says what it does and, when done, how long it took (wall seconds: on a loaded machine CPU
 # seconds are the figure to compare, docs/compiled.md).
+# `make run` needs only the first: postproc and its plugins (pure Python) with their dependencies, and the
+# setuptools their editable install builds with; the build tools and the extras are half the venv's CPU
+# time (docs/benchmarks.md, branch suitetime). The second, which compiling and the suite need, installs
+# everything (and so counts as the first too): a venv made before the split stays valid, nothing compiles again.
+# A venv whose .venv/.installed is newer than these files (made before the split) has it all already: it is
+# not installed again, which would also remove its compiled tree (a pure install does) behind make's back.
+$(RUNTIME): pyproject.toml setup.py $(PLUGINS)
+	@if [ -f $(STAMP) ] && [ -z "$$(find pyproject.toml setup.py $(PLUGINS) -newer $(STAMP))" ]; then \
+	  echo "make: [venv] $(VENV) is there (.venv/.installed)"; else \
+	echo "make: [venv] creating $(VENV): postproc and its plugins (pure Python) with their dependencies" && \
+	start=$$(date +%s) && set -x && \
+	$(PYTHON) -m venv $(VENV) && \
+	$(BIN)/pip install --quiet $(SETUPTOOLS) && \
+	POSTPROC_PURE=1 PYTHONWARNINGS=ignore::UserWarning $(BIN)/pip install --quiet --no-build-isolation -e . $(foreach p,$(PLUGINS),-e $(dir $(p))) && \
+	{ set +x; } 2>/dev/null && echo "make: [venv] $(VENV) made in $$(( $$(date +%s) - start )) s"; fi
+	touch $(RUNTIME)
+
 $(STAMP): pyproject.toml setup.py $(PLUGINS)
-	@echo "make: [venv] creating $(VENV): postproc, its plugins, their dependencies and the build tools (about a minute)"
+	@echo "make: [venv] creating $(VENV): postproc, its plugins, their dependencies, the build tools (mypy) and what the suite needs (pytest, hypothesis, pillow, dask)"
 	@start=$$(date +%s) && set -x && \
 	$(PYTHON) -m venv $(VENV) && \
 	$(BIN)/pip install --quiet $(BUILD_REQUIRES) && \
 	POSTPROC_PURE=1 PYTHONWARNINGS=ignore::UserWarning $(BIN)/pip install --quiet --no-build-isolation -e '.[test,render,dask]' $(foreach p,$(PLUGINS),-e $(dir $(p))) && \
 	{ set +x; } 2>/dev/null && echo "make: [venv] $(VENV) made in $$(( $$(date +%s) - start )) s"
-	touch $(STAMP)
+	touch $(STAMP) $(RUNTIME)
 
 # Compiles the hot path (pure Python where there is no C compiler), again when a hot module is edited
 # (meanwhile postproc runs it as pure Python: postproc --version says which). mypyc type-checks and writes
@@ -42,7 +62,7 @@ $(NATIVE): $(STAMP) $(HOT)
 # them again: pip compiles what it copies into site-packages, not an editable source tree, and where
 # PYTHONDONTWRITEBYTECODE is set no run writes a .pyc. compileall writes them even then, and skips the
 # files whose .pyc is up to date: cheap to repeat after an edit (make test does). On every core (-j 0).
-bytecode: $(STAMP)
+bytecode: $(RUNTIME)
 	@echo "make: [byte code] byte-compiling the core, the dialects and the plugins (what is up to date is skipped)"
 	@start=$$(date +%s) && $(BIN)/python -m compileall -q -j 0 postproc dialects $(foreach p,$(PLUGINS),$(dir $(p))) && \
 	  echo "make: [byte code] written in $$(( $$(date +%s) - start )) s"
@@ -55,12 +75,14 @@ install: compile
 # compiled hot path only runs faster), compiled once `make install` has run.
 run: bytecode
 	@echo "make: [examples] translating and verifying the bundled examples: $$($(BIN)/postproc --version)"
-	bash examples/run.sh
+	$(BIN)/python examples/run.py
 	@echo "make: [examples] done; 'make install' compiles the hot path (a few minutes), which 'make test' and 'make bench' do too"
 
 # The whole suite against the compiled hot path, then against the pure-Python fallback (skipped where
 # nothing was compiled: the first run was pure already). Each run spreads its tests over every core
 # (pytest-xdist; JOBS=1 runs them in one process); a worker idle at the end takes tests from a busy one.
+# The second run skips the tests marked one_build, the same in both builds (they run no compiled module:
+# tests/conftest.py), with POSTPROC_SECOND_BUILD=1.
 # A plugin's own suite (plugins/*/tests: the conformance suite with the settings of its pyproject.toml,
 # about 8 s of CPU for the example plugin) runs from its folder, after the core's.
 JOBS ?= auto
@@ -70,8 +92,8 @@ test: install
 	$(BIN)/postproc --version
 	$(PYTEST) && for p in $(PLUGIN_TESTS); do (cd $$p && $(PYTEST)) || exit 1; done
 	if [ -f postproc/_compiled/manifest.txt ]; then \
-	  POSTPROC_PURE=1 $(BIN)/postproc --version && POSTPROC_PURE=1 $(PYTEST) && \
-	  for p in $(PLUGIN_TESTS); do (cd $$p && POSTPROC_PURE=1 $(PYTEST)) || exit 1; done; fi
+	  POSTPROC_PURE=1 $(BIN)/postproc --version && POSTPROC_PURE=1 POSTPROC_SECOND_BUILD=1 $(PYTEST) && \
+	  for p in $(PLUGIN_TESTS); do (cd $$p && POSTPROC_PURE=1 POSTPROC_SECOND_BUILD=1 $(PYTEST)) || exit 1; done; fi
 
 bench: compile
 	$(BIN)/pip install --quiet -r benchmarks/requirements.txt

@@ -80,6 +80,30 @@ def _outputs_valid_on_their_controllers() -> object:
     assert not found, "\n\n".join(found)
 
 
+ONE_BUILD = "one_build"
+"""The marker of a test whose run is the same in both builds: it exercises no compiled module (a scan of the
+sources, of the benchmark harness). ``make test`` runs the suite against the compiled build and then the pure
+one; the second pass (``POSTPROC_SECOND_BUILD=1``) skips these: the first proved all they prove. The reason
+is required, and says why the build cannot matter."""
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    config.addinivalue_line("markers", f"{ONE_BUILD}(reason): the same in both builds; make test's second pass skips it")
+
+
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    second = os.environ.get("POSTPROC_SECOND_BUILD", "") not in ("", "0")
+    for item in items:
+        marker = item.get_closest_marker(ONE_BUILD)
+        if marker is None:
+            continue
+        reason = marker.kwargs.get("reason", "")
+        if not reason:
+            raise pytest.UsageError(f"{item.nodeid}: {ONE_BUILD} needs a reason= saying why the build cannot matter")
+        if second:
+            item.add_marker(pytest.mark.skip(reason=f"the same in both builds, run in make test's first pass: {reason}"))
+
+
 def pytest_sessionfinish(session: pytest.Session) -> None:
     """An xdist worker hands its counts to the controller, which prints the sum (``pytest_testnodedown``)."""
     workeroutput = getattr(session.config, "workeroutput", None)

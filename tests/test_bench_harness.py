@@ -28,6 +28,10 @@ def toolpath(cli: Callable[..., Any], path: Path) -> list[dict[str, Any]]:
     return [json.loads(line) for line in r.out.decode().splitlines()[1:]]
 
 
+HARNESS = pytest.mark.one_build(
+    reason="checks the benchmark harness's report (rows, figures, verdicts), not postproc's outputs, which the rest of the suite holds in both builds; the build changes only the speeds it prints")
+
+
 def write(tmp_path: Path, name: str, lines: Iterator[str]) -> Path:
     path = tmp_path / name
     path.write_text("".join(lines), encoding="ascii")
@@ -119,6 +123,7 @@ SUMMARY_ROWS = [
 ]
 
 
+@HARNESS
 def test_quick_run_end_to_end(tmp_path: Path) -> None:
     """Tiny sizes, one round: every row is measured (a figure, a ratio, a verdict where a target is)."""
     done = subprocess.run(
@@ -146,6 +151,7 @@ def test_quick_run_end_to_end(tmp_path: Path) -> None:
     assert re.search(r"^targets: \d+ PASS, \d+ MISS, \d+ not measured$", out, re.M)
 
 
+@HARNESS
 def test_rows_measure_only_what_they_name(tmp_path: Path) -> None:
     """``--rows toolpath startup``: those rows and the baselines they are compared with, nothing else."""
     done = subprocess.run(

@@ -10,28 +10,45 @@ interpreted subclasses to that: statically in both builds, and on the compiled t
 from __future__ import annotations
 
 import ast
+import functools
 import importlib
 import tomllib
 from pathlib import Path
+from typing import Iterator
 
 import pytest
 
 from postproc import native
 
 ROOT = Path(__file__).resolve().parents[1]
+STATIC = pytest.mark.one_build(reason="a scan of the source files (ast): the compiled types are looked at below")
 HOT = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["tool"]["postproc"]["compiled"]
 
 
+@functools.cache
+def _all_classes() -> tuple[tuple[ast.ClassDef, str], ...]:
+    """Every class of the core, dialects and plugins, with its source, in file order: parsed once for
+    the scans below (each parsed every file again, twice for one of them: ~8 s of CPU between them)."""
+    return tuple((node, str(path.relative_to(ROOT)))
+                 for folder in ("postproc", "dialects", "plugins") for path in sorted((ROOT / folder).rglob("*.py"))
+                 for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))) if isinstance(node, ast.ClassDef))
+
+
+@pytest.fixture(autouse=True, scope="module")
+def _parsed_once() -> Iterator[None]:
+    """Drops the parsed sources after this file's tests: kept, their million objects made every later
+    collection of the cyclic garbage collector in the worker walk them (tests/test_no_cycles_per_block.py's
+    ``gc.collect()`` took 4 s instead of 0.1 s)."""
+    yield
+    _all_classes.cache_clear()
+
+
 def _classes() -> dict[str, tuple[ast.ClassDef, str]]:
-    """Every class of the core, dialects and plugins by name (the last one of a name wins: names used
+    """Every class of the core, dialects and plugins by name (the first one of a name wins: names used
     as bases here are unique), with its source."""
     found: dict[str, tuple[ast.ClassDef, str]] = {}
-    for folder in ("postproc", "dialects", "plugins"):
-        for path in sorted((ROOT / folder).rglob("*.py")):
-            tree = ast.parse(path.read_text(encoding="utf-8"))
-            for node in ast.walk(tree):
-                if isinstance(node, ast.ClassDef):
-                    found.setdefault(node.name, (node, str(path.relative_to(ROOT))))
+    for node, source in _all_classes():
+        found.setdefault(node.name, (node, source))
     return found
 
 
@@ -64,17 +81,13 @@ def _first_declaration(cls: ast.ClassDef, name: str, classes: dict[str, tuple[as
 def _compiled_open_classes() -> list[tuple[ast.ClassDef, str]]:
     """The classes of the compiled modules that allow interpreted subclasses (plugins extend them);
     protocols are no native classes (they only declare)."""
-    out = []
-    for source in HOT:
-        tree = ast.parse((ROOT / source).read_text(encoding="utf-8"))
-        for node in ast.walk(tree):
-            if isinstance(node, ast.ClassDef) and any(
-                    "allow_interpreted_subclasses=True" in ast.unparse(d) for d in node.decorator_list) \
-                    and not any(ast.unparse(b).endswith("Protocol") for b in node.bases):
-                out.append((node, source))
-    return out
+    hot = set(HOT)
+    return [(node, source) for node, source in _all_classes() if source in hot and any(
+            "allow_interpreted_subclasses=True" in ast.unparse(d) for d in node.decorator_list)
+            and not any(ast.unparse(b).endswith("Protocol") for b in node.bases)]
 
 
+@STATIC
 def test_constants_of_open_compiled_classes_are_class_attributes() -> None:
     """An UPPER_CASE attribute of a compiled class that plugins subclass is declared ``ClassVar`` or
     ``Final`` (here or in a base), never a bare or annotated instance default."""
@@ -93,6 +106,7 @@ def test_constants_of_open_compiled_classes_are_class_attributes() -> None:
     assert not wrong, "declare these ClassVar (compiled, a subclass's value is not read):\n" + "\n".join(wrong)
 
 
+@STATIC
 def test_the_scan_finds_a_bare_constant() -> None:
     """The scan above flags the declaration that broke the compiled LinuxCNC reader."""
     tree = ast.parse("class Base:\n    X: ClassVar[int] = 1\nclass R(Base):\n    DIALECT = ''\n    X = 2\n")
@@ -124,16 +138,13 @@ def _static_names(cls: ast.ClassDef) -> set[str]:
     return statics & called
 
 
+@STATIC
 def test_no_subclass_overrides_a_static_method_of_an_open_compiled_class() -> None:
     """Compiled, ``self.helper()`` of a static (or class) method calls the base's own function directly: a
     plugin's override is never reached (LinuxCNC's ``_path_tolerance`` read no ``G64 P Q`` so). Such a
     helper a subclass overrides must be a plain method."""
     classes = _classes()
-    everything = []
-    for folder in ("postproc", "dialects", "plugins"):
-        for path in sorted((ROOT / folder).rglob("*.py")):
-            tree = ast.parse(path.read_text(encoding="utf-8"))
-            everything += [(node, str(path.relative_to(ROOT))) for node in ast.walk(tree) if isinstance(node, ast.ClassDef)]
+    everything = _all_classes()
     wrong = []
     for cls, source in _compiled_open_classes():
         statics = _static_names(cls)
@@ -147,6 +158,7 @@ def test_no_subclass_overrides_a_static_method_of_an_open_compiled_class() -> No
     assert not wrong, "\n".join(wrong)
 
 
+@STATIC
 def test_the_scan_finds_an_overridden_static_method() -> None:
     tree = ast.parse("class Base:\n    @staticmethod\n    def helper() -> None: ...\n"
                      "    def run(self) -> None:\n        self.helper()\n"

@@ -24,6 +24,8 @@ import pytest
 
 from tests.support.import_graph import Graph, arrows_not_down, find_circle, imports, unit_graph
 
+pytestmark = pytest.mark.one_build(reason="a scan of the source files (ast): it runs no postproc code")
+
 ROOT = Path(__file__).resolve().parents[1]
 
 LAYERS: tuple[tuple[str, tuple[str, ...], str], ...] = (

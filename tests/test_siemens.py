@@ -19,7 +19,7 @@ from hypothesis import strategies as st
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList
 from postproc.ir.expr import Binary, Expr, Func, Num, Unary, Var
-from postproc.setup.machine_setup import MachineSetup, load_setup
+from postproc.setup.machine_setup import Limits, MachineSetup, load_setup
 
 from tests.support.paths import assert_verifies_exactly, moves_and_dwells
 
@@ -289,9 +289,12 @@ def test_if_else_and_def_int_rounds() -> None:
 
 
 def test_an_endless_loop_is_stopped_by_the_bound() -> None:
+    """The set-up's bound on work run again stops a WHILE that never ends (a counter, so never the same
+    state twice); a bound of 20,000, not the default million (8 s of CPU to reach, pure), which
+    tests/test_interp_work.py holds."""
     errors = _errors("G710 G90 G0 X0\nR1=0\nWHILE R1>=0\nG1 X1 F10\nG1 X0\nR1=R1+1\nENDWHILE\nM30\n", "siemens",
-                     "linuxcnc")
-    assert "repeats more than" in errors[0]
+                     "linuxcnc", MachineSetup(limits=Limits(repeated_work=20_000)))
+    assert "repeats more than 20000 blocks" in errors[0]
 
 
 def test_an_unset_r_parameter_is_an_error_not_zero() -> None:
