@@ -49,7 +49,7 @@ from ..ir.expr import Binary, Expr, Num
 from ..ir import Block, CompoundMotion, CutterCompensation, Motion, Section
 from ..ir.keys import watches_none
 from ..lowering.lower import BlockStep, LoweringStep, run_blocks, still_moving
-from ..lowering.move_words import X as X_BIT, Y as Y_BIT, Z as Z_BIT, move_words
+from ..lowering.move_words import X as X_BIT, Y as Y_BIT, Z as Z_BIT, move_words, moving
 from ..ir.state import MM_PER_INCH, ModalState, changes_nothing
 from .affine import EXACT, INDEX, XYZ
 from .frame import PLANE_AXES, Frame, Position
@@ -155,7 +155,7 @@ class FrameEvaluator(BlockStep):
         else ``take``."""
         if self.frame is None and self.plain_mm:
             m = block.sections["Motion"]
-            if isinstance(m, Motion) and m.mode in _MOVES and not self.ctx.state.symbolic:
+            if isinstance(m, Motion) and moving(m.mode) and not self.ctx.state.symbolic:
                 reached = self.reached
                 words = self.words
                 bits = words.read(m)
@@ -171,9 +171,9 @@ class FrameEvaluator(BlockStep):
                     reached.settle()
                     self.p.update(m.axes)  # type: ignore[arg-type]  # numbers: nothing is symbolic yet
                 unsettled = reached.unsettled
-                if unsettled:
+                if len(unsettled) != 0:
                     unsettled.difference_update(m.axes)
-                if self.reached.symbolic:
+                if reached.symbolic:
                     self.targets(block.sections)
                 return None
         return still_moving(block, self.take(block))

@@ -67,7 +67,7 @@ from ..ir.keys import watches_none
 from ..compensation.tool_table import ToolTable
 from .lower import BlockStep, LoweringStep, still_moving
 from .length_point import AXIS, MM_PER_INCH, PLAIN, MachineFrame, follow_point, length_in_force
-from .move_words import Z as Z_BIT, move_words
+from .move_words import Z as Z_BIT, move_words, moving
 from .point_after import FOLLOWED
 
 _WATCHED: Final = frozenset(("ToolLengthOffset", "Motion", "CompoundMotion", "CycleCall", "DistanceMode", "Units",
@@ -234,6 +234,8 @@ class _Complete(BlockStep):
         self.unplaced = set(axes)  # axes nothing has placed or re-expressed since the start: only they are read
         self.frame = MachineFrame(ctx.setup)  # what puts a machine-coordinate Z in the program's frame
         self.mill = axes == (AXIS,)
+        self.z_noted = False  # a plain absolute move's Z waits in ``noted_z`` (``_settle``): no dictionary written
+        self.noted_z = 0.0
         self.words = move_words(ctx)  # a plain move's numbers, read once for the steps that follow the point
 
     def take(self, block: Block) -> list[Block] | None:
@@ -256,20 +258,23 @@ class _Complete(BlockStep):
         if pending is None and quiet:  # the common block: at most a plain move
             motion = sections.get("Motion")
             if isinstance(motion, Motion):  # (typed: its fields are read natively, not by name)
-                plain = motion.mode in PLAIN
+                plain = moving(motion.mode)  # (``PLAIN``)
                 words = motion.axes
                 absolute = self.absolute
-                if self.mill and plain and not self.diverged and not self.unplaced:
+                if self.mill and plain and len(self.diverged) == 0 and len(self.unplaced) == 0:
                     read = self.words
                     bits = read.read(motion)  # (its numbers, read once for the steps that follow the point)
                     if bits >= 0:
                         if bits & Z_BIT:
                             if absolute:
-                                pos[AXIS] = read.z
+                                self.noted_z = read.z  # (into ``pos`` before it is read: ``_settle``)
+                                self.z_noted = True
                             else:
+                                self._settle()
                                 known = pos[AXIS]
                                 pos[AXIS] = None if known is None else known + read.z
                         return None
+                self._settle()
                 for axis in axes:
                     value = words.get(axis)
                     if value is None:
@@ -291,6 +296,7 @@ class _Complete(BlockStep):
                 if unplaced:
                     unplaced.difference_update(words)
             return None
+        self._settle()
         ctx = self.ctx
         held = self.held
         frame = self.frame
@@ -439,6 +445,12 @@ class _Complete(BlockStep):
             return None
         out.append(block)
         return out
+
+    def _settle(self) -> None:
+        """The Z a plain absolute move noted (``noted_z``) into ``pos``, before anything reads it."""
+        if self.z_noted:
+            self.z_noted = False
+            self.pos[AXIS] = self.noted_z
 
     def finish(self) -> list[Block]:
         pending = self.pending
