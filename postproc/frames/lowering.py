@@ -49,6 +49,7 @@ from ..ir.expr import Binary, Expr, Num
 from ..ir import Block, CompoundMotion, CutterCompensation, Motion, Section
 from ..ir.keys import watches_none
 from ..lowering.lower import BlockStep, LoweringStep, run_blocks, still_moving
+from ..lowering.move_words import X as X_BIT, Y as Y_BIT, Z as Z_BIT, move_words, moving
 from ..ir.state import MM_PER_INCH, ModalState, changes_nothing
 from .affine import EXACT, INDEX, XYZ
 from .frame import PLANE_AXES, Frame, Position
@@ -111,6 +112,8 @@ class FrameEvaluator(BlockStep):
         self.scale = run.scale = MM_PER_INCH if self.modal.units == "inch" else 1.0
         self.plain_mm = self.scale == 1.0 and self.modal.distance == "absolute"
         """Absolute millimetres: a move's words are its position (``run``'s common case)."""
+        self.words = move_words(ctx)
+        """A plain move's numbers, read once for the steps that follow the point (``take_move``)."""
 
     def run(self, blocks: Iterator[Block]) -> Iterator[Block]:
         """Every block, as the lowering step takes them (``take``)."""
@@ -123,6 +126,7 @@ class FrameEvaluator(BlockStep):
         s = block.sections
         if not s:
             return None
+        self.reached.settle()  # (the plain moves' noted numbers: ``take_move``)
         if self.frame is None and watches_none(s, _WATCHED):
             m = s.get("Motion")
             if m is None:
@@ -146,15 +150,30 @@ class FrameEvaluator(BlockStep):
 
     def take_move(self, block: Block) -> list[Block] | None:
         """``take`` for a block the loop found only a move (``only_move``: not asked again here, ~450 instructions
-        compiled): with no frame, in absolute millimetres, the position follows its words; else ``take``."""
+        compiled): with no frame, in absolute millimetres, the position follows its words (a move of X, Y and Z
+        numbers only noted, ``FrameRun.settle``: read once for the steps that follow the point, ``move_words``);
+        else ``take``."""
         if self.frame is None and self.plain_mm:
             m = block.sections["Motion"]
-            if isinstance(m, Motion) and m.mode in _MOVES and not self.ctx.state.symbolic:
-                self.p.update(m.axes)  # type: ignore[arg-type]  # numbers: nothing is symbolic yet
-                unsettled = self.reached.unsettled
-                if unsettled:
+            if isinstance(m, Motion) and moving(m.mode) and not self.ctx.state.symbolic:
+                reached = self.reached
+                words = self.words
+                bits = words.read(m)
+                if bits >= 0:
+                    reached.noted |= bits
+                    if bits & X_BIT:
+                        reached.noted_x = words.x
+                    if bits & Y_BIT:
+                        reached.noted_y = words.y
+                    if bits & Z_BIT:
+                        reached.noted_z = words.z
+                else:
+                    reached.settle()
+                    self.p.update(m.axes)  # type: ignore[arg-type]  # numbers: nothing is symbolic yet
+                unsettled = reached.unsettled
+                if len(unsettled) != 0:
                     unsettled.difference_update(m.axes)
-                if self.reached.symbolic:
+                if reached.symbolic:
                     self.targets(block.sections)
                 return None
         return still_moving(block, self.take(block))

@@ -136,7 +136,7 @@ class _Run:
             raise UnsupportedError(f"{setting.describe()}: the tool offset in force is not known here (a computed "
                                    "register, a negative or dynamic offset, or a register the set-up does not give)")
         run = self.ctx.state.extra.get(RUN_KEY)
-        point = run.p if isinstance(run, FrameRun) else {}
+        point = run.point() if isinstance(run, FrameRun) else {}
         values: dict[str, float | Expr] = {}
         for letter, value in setting.values.items():
             if isinstance(value, Expr):

@@ -81,7 +81,7 @@ class FrameReadings:
             return self._at_start(axis)
         if axis in run.unsettled and not self.ctx.run_data.get(ASSUMED_START):
             return None
-        here = run.p.get(axis)
+        here = run.point().get(axis)
         if here is None:
             return None
         return here / run.scale if axis in "XYZUVW" else here
@@ -124,7 +124,7 @@ class FrameReadings:
             return None
         frame = run.frame
         g5x = tuple(sorted((n, tuple(sorted(v.items()))) for n, v in run.g5x.items()))
-        point = (tuple(sorted(run.p.items())), tuple(sorted(run.unsettled)), run.scale, run.cutter)
+        point = (tuple(sorted(run.point().items())), tuple(sorted(run.unsettled)), run.scale, run.cutter)
         if frame is None or frame.rules != "shared_offset":
             return (run.work, g5x, point)
         return (run.work, g5x, frame.applied, tuple(sorted(frame.saved.items())), tuple(sorted(frame.turns.items())),

@@ -9,6 +9,7 @@ from typing import Final
 from mypy_extensions import mypyc_attr
 
 from ..compensation.tool_length import ToolLength
+from ..lowering.move_words import X, Y, Z
 from .frame import Frame, Position
 from .run_order import RunOrder
 
@@ -21,13 +22,20 @@ class FrameRun:
     """What the evaluation has reached: copied with the reading state into a translation's dry run."""
 
     __slots__ = ("frame", "p", "g5x", "symbolic", "work", "order", "unsettled", "scale", "cutter", "tools", "sideways",
-                 "tools_known", "table_known")
+                 "tools_known", "table_known", "noted", "noted_x", "noted_y", "noted_z")
 
     def __init__(self, p: Position) -> None:
         self.frame: Frame | None = None
         """None until the first frame command (or a rotation of a work system)."""
         self.p = p
-        """The program position, mm (degrees on rotary axes), None where unknown."""
+        """The program position, mm (degrees on rotary axes), None where unknown; read through ``point``: the X, Y
+        and Z of the plain moves since it was last read are noted apart (``noted``)."""
+        self.noted = 0
+        """Bits (``postproc.lowering.move_words.X``...) of the axes plain moves noted since ``p`` was brought up to
+        date (``settle``): the commonest block, a plain move with no frame, writes no dictionary."""
+        self.noted_x = 0.0
+        self.noted_y = 0.0
+        self.noted_z = 0.0
         self.unsettled: set[str] = set(p)
         """Axes not programmed absolutely since the start: their ``p`` is the set-up's assumed start, not what
         the machine reads as its current point (a read of the current position there is the machine's,
@@ -53,3 +61,22 @@ class FrameRun:
         """The work system the program selected last (1 = G54); None before it selects one (the machine's)."""
         self.order = RunOrder()
         """The constructs and jumps of the symbolic part: which frame command runs in the text's order."""
+
+    def settle(self) -> None:
+        """The noted X, Y and Z into ``p`` (before anything reads it)."""
+        noted = self.noted
+        if not noted:
+            return
+        self.noted = 0
+        p = self.p
+        if noted & X:
+            p["X"] = self.noted_x
+        if noted & Y:
+            p["Y"] = self.noted_y
+        if noted & Z:
+            p["Z"] = self.noted_z
+
+    def point(self) -> Position:
+        """The program position (``p``), brought up to date."""
+        self.settle()
+        return self.p

@@ -48,6 +48,7 @@ from ..ir.state import MM_PER_INCH, PLANE_AXES, ModalState, changes_nothing
 from .lower import BlockStep, LoweringStep, run_blocks
 from .arc_geometry import Arc, chord_points, r_centre_error, r_pieces, signed_radius, split
 from .arc_words import ArcWords
+from .move_words import X as X_BIT, Y as Y_BIT, Z as Z_BIT, move_words
 from .point_after import cycle_end
 
 FORMS: Final = ("lines", "ijk", "r")
@@ -144,6 +145,7 @@ class _Arcs(BlockStep):
 
     def take(self, block: Block) -> list[Block] | None:
         rewriter = self.rewriter
+        rewriter.settle()
         try:
             out = rewriter.block(block)
         except PostprocError as err:
@@ -162,15 +164,19 @@ class _Arcs(BlockStep):
     def take_move(self, block: Block) -> list[Block] | None:
         """``take`` for a block that is only a move: a straight move while the position is ``plain`` moves it to its
         words, as ``_track`` does (~2.5k instructions a block compiled through ``take``: every grbl translation).
-        While nothing read is symbolic (``ModalState.symbolic``: no word of the program so far is an ``Expr``, as
-        ``postproc.frames.lowering`` asks) every word is a number: one ``dict.update`` (a loop that unboxed and
-        boxed each float, ~1.3k instructions a block compiled)."""
+        A move of X, Y and Z numbers is only noted (``_Rewriter.note``: read once for the steps that follow the
+        point, ``move_words``); other words go into the position at once: while nothing read is symbolic
+        (``ModalState.symbolic``: no word of the program so far is an ``Expr``, as ``postproc.frames.lowering``
+        asks) every word is a number, one ``dict.update`` (~800 instructions compiled)."""
         rewriter = self.rewriter
         if rewriter.plain:
             motion = block.sections["Motion"]
             if isinstance(motion, Motion):
                 mode = motion.mode
                 if mode == "linear" or mode == "rapid":
+                    if rewriter.note(motion):
+                        return None
+                    rewriter.settle()
                     position = rewriter.position
                     if not self.ctx.state.symbolic:
                         position.update(motion.axes)  # type: ignore[arg-type]  # numbers: nothing is symbolic yet
@@ -203,9 +209,47 @@ class _Rewriter:
         self.restate = False
         """An arc became lines: the next move is written from its sections (a modal G2 it relied on is gone)."""
         self.position = self.state.position  # (the same dictionary: nothing replaces it)
+        self.read = move_words(ctx)
+        """A plain move's numbers, read once for the steps that follow the point (``note``)."""
+        self.noted = 0
+        """Bits (``move_words.X``...) of the axes plain moves noted since the position was last brought up to
+        date (``settle``, before anything reads it)."""
+        self.noted_x = 0.0
+        self.noted_y = 0.0
+        self.noted_z = 0.0
         self.plain = False
         """A straight move alone in its block only moves the position to its words (``settle_plain``)."""
         self.settle_plain()
+
+    def note(self, motion: Motion) -> bool:
+        """A straight move's X, Y and Z numbers noted for ``settle`` (False: it has other words, for the position
+        at once)."""
+        words = self.read
+        bits = words.read(motion)
+        if bits < 0:
+            return False
+        self.noted |= bits
+        if bits & X_BIT:
+            self.noted_x = words.x
+        if bits & Y_BIT:
+            self.noted_y = words.y
+        if bits & Z_BIT:
+            self.noted_z = words.z
+        return True
+
+    def settle(self) -> None:
+        """The noted numbers into the position (``note``)."""
+        noted = self.noted
+        if not noted:
+            return
+        self.noted = 0
+        position = self.position
+        if noted & X_BIT:
+            position["X"] = self.noted_x
+        if noted & Y_BIT:
+            position["Y"] = self.noted_y
+        if noted & Z_BIT:
+            position["Z"] = self.noted_z
 
     def settle_plain(self) -> None:
         """``plain``: not in a kept cycle's profile, no move to restate, absolute words, no increment addresses."""

@@ -25,15 +25,12 @@ from ..compensation.geometry_for import cutter_for
 from ..compensation.rules import CutterRules
 from ..compensation.tool_table import ToolTable
 from ..interp.control import LABEL
+from .move_words import X as _X, Y as _Y, Z as _Z, move_words
 from .point_after import RETURNS, compound_end, cycle_end, loses_after, unknown_axes
 from .rule_trial import RuleTrial
 
 MM_PER_INCH = 25.4
 MOVES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
-_X: Final = 1
-_Y: Final = 2
-_Z: Final = 4
-"""The bits of ``ProgrammedPoint.noted``: the axes a plain move noted since ``pos`` was last brought up to date."""
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -92,6 +89,8 @@ class ProgrammedPoint:
         self.noted_x = 0.0
         self.noted_y = 0.0
         self.noted_z = 0.0
+        self.words = move_words(ctx)
+        """The run's reading of a plain move's numbers (``_note``)."""
         self.at: tuple[float, float] = (0.0, 0.0)
         """The controlled point in the plane the last released move ends at, mm."""
         self.at_normal = 0.0
@@ -117,9 +116,23 @@ class ProgrammedPoint:
         self.pos = {axis: None for axis in self.pos}
 
     def _note(self, motion: Motion) -> None:
-        """A plain absolute move while no compensation is on: its X, Y and Z, in mm, noted for ``_settle``."""
-        axes = motion.axes
+        """A plain absolute move while no compensation is on: its X, Y and Z, in mm, noted for ``_settle`` (read
+        once for every step that follows the point, ``move_words``; a move of another axis or a computed word
+        is read here)."""
         scale = self.scale
+        words = self.words
+        bits = words.read(motion)
+        if bits > 0:
+            self.noted |= bits
+            self.unknown &= ~bits
+            if bits & _X:
+                self.noted_x = words.x * scale
+            if bits & _Y:
+                self.noted_y = words.y * scale
+            if bits & _Z:
+                self.noted_z = words.z * scale
+            return
+        axes = motion.axes
         x = axes.get("X")
         if x is not None:
             self.noted |= _X

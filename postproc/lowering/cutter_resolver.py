@@ -28,6 +28,7 @@ from .cutter_point import MM_PER_INCH, MOVES, Unresolvable, UnknownHere
 from .point_after import FOLLOWED
 from .rule_trial import STAND_IN_RADIUS, STRETCH_LIMIT, RuleTrial
 from .lower import BlockStep, run_blocks, still_moving
+from .move_words import moving
 
 Keeps = Callable[["Resolver", CutterCompensation], bool]
 """Whether the target writes a G41/G42 itself (given the resolver, for the tool data it tracks)."""
@@ -370,7 +371,7 @@ class Resolution(BlockStep):
                         break
         if plain:
             motion = sections.get("Motion")  # the common block: a move, noted for a later entry move
-            if isinstance(motion, Motion) and r.absolute and motion.mode in MOVES and self.radii \
+            if isinstance(motion, Motion) and r.absolute and moving(motion.mode) and self.radii \
                     and not (odd and "MachineCoordinates" in sections):
                 r._note(motion)
             elif motion is not None or odd:
@@ -455,7 +456,7 @@ class Checking(BlockStep):
                     break
             if not general:
                 motion = sections.get("Motion")
-                if isinstance(motion, Motion) and r.absolute and motion.mode in MOVES:
+                if isinstance(motion, Motion) and r.absolute and moving(motion.mode):
                     r._note(motion)
                 elif motion is not None:
                     r._settle()
@@ -488,7 +489,7 @@ class Checking(BlockStep):
         if self.idle and not self.stopped:
             motion = block.sections["Motion"]
             r = self.resolver
-            if isinstance(motion, Motion) and r.absolute and motion.mode in MOVES:
+            if isinstance(motion, Motion) and r.absolute and moving(motion.mode):
                 r._note(motion)
                 return None
         return still_moving(block, self.take(block))

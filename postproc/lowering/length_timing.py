@@ -67,6 +67,7 @@ from ..ir.keys import watches_none
 from ..compensation.tool_table import ToolTable
 from .lower import BlockStep, LoweringStep, still_moving
 from .length_point import AXIS, MM_PER_INCH, PLAIN, MachineFrame, follow_point, length_in_force
+from .move_words import Z as Z_BIT, move_words, moving
 from .point_after import FOLLOWED
 
 _WATCHED: Final = frozenset(("ToolLengthOffset", "Motion", "CompoundMotion", "CycleCall", "DistanceMode", "Units",
@@ -232,6 +233,10 @@ class _Complete(BlockStep):
         self.diverged: set[str] = set()  # axes whose program point on the target a change written alone has moved
         self.unplaced = set(axes)  # axes nothing has placed or re-expressed since the start: only they are read
         self.frame = MachineFrame(ctx.setup)  # what puts a machine-coordinate Z in the program's frame
+        self.mill = axes == (AXIS,)
+        self.z_noted = False  # a plain absolute move's Z waits in ``noted_z`` (``_settle``): no dictionary written
+        self.noted_z = 0.0
+        self.words = move_words(ctx)  # a plain move's numbers, read once for the steps that follow the point
 
     def take(self, block: Block) -> list[Block] | None:
         return self._take(block, watches_none(block.sections, _STATE))
@@ -253,9 +258,23 @@ class _Complete(BlockStep):
         if pending is None and quiet:  # the common block: at most a plain move
             motion = sections.get("Motion")
             if isinstance(motion, Motion):  # (typed: its fields are read natively, not by name)
-                plain = motion.mode in PLAIN
+                plain = moving(motion.mode)  # (``PLAIN``)
                 words = motion.axes
                 absolute = self.absolute
+                if self.mill and plain and len(self.diverged) == 0 and len(self.unplaced) == 0:
+                    read = self.words
+                    bits = read.read(motion)  # (its numbers, read once for the steps that follow the point)
+                    if bits >= 0:
+                        if bits & Z_BIT:
+                            if absolute:
+                                self.noted_z = read.z  # (into ``pos`` before it is read: ``_settle``)
+                                self.z_noted = True
+                            else:
+                                self._settle()
+                                known = pos[AXIS]
+                                pos[AXIS] = None if known is None else known + read.z
+                        return None
+                self._settle()
                 for axis in axes:
                     value = words.get(axis)
                     if value is None:
@@ -277,6 +296,7 @@ class _Complete(BlockStep):
                 if unplaced:
                     unplaced.difference_update(words)
             return None
+        self._settle()
         ctx = self.ctx
         held = self.held
         frame = self.frame
@@ -365,10 +385,12 @@ class _Complete(BlockStep):
                 pass
             elif returns and _incremental_return(block, absolute, axes, pos):
                 assert isinstance(motion, Motion)
+                words = dict(motion.axes)  # (a new dictionary: ``move_words`` keys its reads on the old one)
                 for a, value in motion.axes.items():
                     known = pos[a]
                     assert known is not None and not isinstance(value, Expr)  # (tested above)
-                    motion.axes[a] = known + float(value)
+                    words[a] = known + float(value)
+                motion.axes = words
                 sections["DistanceMode"] = DistanceMode("absolute")
                 block.changed()
                 restore = True
@@ -379,9 +401,11 @@ class _Complete(BlockStep):
                     and all(pos[a] is not None or (not compensating and a in target.POSITION_READS and a in unplaced
                                                    and a not in diverged and _reads_here(sections)) for a in missing)
                     and "MachineCoordinates" not in sections and "CompoundMotion" not in sections):
+                words = dict(motion.axes)  # (a new dictionary: ``move_words`` keys its reads on the old one)
                 for a in missing:
                     known = pos[a]
-                    motion.axes[a] = _position_read(target, a, ctx.diameter) if known is None else known
+                    words[a] = _position_read(target, a, ctx.diameter) if known is None else known
+                motion.axes = words
                 block.changed()
             elif not returns and isinstance(motion, Motion) and motion.mode in _RETURNS:
                 _refuse(ctx, target, at, "the next move is a reference return, which the target makes in machine "
@@ -421,6 +445,12 @@ class _Complete(BlockStep):
             return None
         out.append(block)
         return out
+
+    def _settle(self) -> None:
+        """The Z a plain absolute move noted (``noted_z``) into ``pos``, before anything reads it."""
+        if self.z_noted:
+            self.z_noted = False
+            self.pos[AXIS] = self.noted_z
 
     def finish(self) -> list[Block]:
         pending = self.pending
@@ -500,7 +530,8 @@ def _shifted_return(block: Block, old: float | None, new: float | None) -> bool:
         return False
     motion = block.sections["Motion"]
     assert isinstance(motion, Motion)
-    motion.axes[AXIS] = float(motion.axes[AXIS]) + new - old  # type: ignore[arg-type]
+    motion.axes = {**motion.axes, AXIS: float(motion.axes[AXIS]) + new - old}  # type: ignore[arg-type]  # (a new
+    # dictionary: ``postproc.lowering.move_words`` keys its reads on the old one)
     block.changed()
     return True
 

@@ -154,8 +154,9 @@ def _offset(block: Block, shift: dict[str, float], per_mm: float, absolute: bool
 
 
 def _moved(section: Section, shift: dict[str, float], per_mm: float) -> bool:
-    """Offset a move's axes (program units) in place; True when one was there."""
-    axes = section.axes  # type: ignore[attr-defined]
+    """Offset a move's axes (program units), in a new dictionary (``postproc.lowering.move_words`` keys its reads
+    on the old one); True when one was there."""
+    axes = dict(section.axes)  # type: ignore[attr-defined]
     moved = False
     for axis, value in shift.items():
         if axis not in axes:
@@ -166,4 +167,6 @@ def _moved(section: Section, shift: dict[str, float], per_mm: float) -> bool:
                                    "into the path here): the sum is not written")
         axes[axis] = float(word) + value * per_mm
         moved = True
+    if moved:
+        section.axes = axes  # type: ignore[attr-defined]
     return moved

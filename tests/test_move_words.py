@@ -1,0 +1,119 @@
+"""``postproc.lowering.move_words``: a plain move's X, Y and Z read once for the steps that follow the point, and
+the steps that note them instead of writing their position at once (the frame evaluation, the arc pass).
+
+* ``MoveWords.read`` against the move's dictionary read word by word, on random moves (another axis, an ``int``
+  or a computed word: ``OTHER``), and its reads keyed on the ``Motion``, its dictionary and its size;
+* the frame evaluation's and the arc pass's position after random plain moves (noted, then brought up to date
+  before a read) against the dictionary updated move by move, as both did before.
+"""
+
+from __future__ import annotations
+
+from hypothesis import given
+from hypothesis import strategies as st
+
+from postproc.context import Context
+from postproc.errors import Diagnostics, ErrorLevel
+from postproc.frames.lowering import FrameEvaluator
+from postproc.frames.run_state import RUN_KEY, FrameRun
+from postproc.ir import Block, Motion
+from postproc.ir.expr import Expr, Var
+from postproc.lowering.arcs import ArcOption, _Arcs
+from postproc.lowering.move_words import OTHER, X, Y, Z, MoveWords, move_words
+from postproc.setup.machine_setup import MachineSetup
+
+_BITS = {"X": X, "Y": Y, "Z": Z}
+
+words = st.one_of(
+    st.floats(-1e4, 1e4, allow_nan=False),
+    st.integers(-5, 5),
+    st.just(Var(name="depth")),
+)
+axes = st.dictionaries(st.sampled_from(["X", "Y", "Z", "A", "U"]), words, max_size=4)
+plain_axes = st.dictionaries(st.sampled_from(["X", "Y", "Z"]), st.floats(-1e4, 1e4, allow_nan=False), max_size=3)
+
+
+def _expected(given: dict[str, float | Expr]) -> tuple[int, dict[str, float]]:
+    """The bits and numbers of a move, word by word."""
+    bits = 0
+    for axis, value in given.items():
+        if axis not in _BITS or type(value) is not float:
+            return OTHER, {}
+        bits |= _BITS[axis]
+    return bits, dict(given)  # type: ignore[arg-type]
+
+
+@given(st.lists(axes, min_size=1, max_size=6))
+def test_a_read_gives_the_moves_numbers(moves: list[dict[str, float | Expr]]) -> None:
+    read = MoveWords()
+    for given in moves:
+        motion = Motion("linear", dict(given))
+        bits, numbers = _expected(given)
+        for _ in range(2):  # the second read: the same Motion, read before
+            assert read.read(motion) == bits
+            if bits != OTHER:
+                got = {a: getattr(read, a.lower()) for a, bit in _BITS.items() if bits & bit}
+                assert got == numbers
+
+
+def test_a_read_is_made_again_for_a_changed_move() -> None:
+    read = MoveWords()
+    motion = Motion("linear", {"X": 1.0})
+    assert read.read(motion) == X
+    motion.axes = {"X": 2.0}  # a new dictionary (a step that changes a move's words makes one)
+    assert read.read(motion) == X and read.x == 2.0
+    motion.axes["Z"] = 3.0  # a word added: another size
+    assert read.read(motion) == X | Z and read.z == 3.0
+    assert read.read(Motion("linear", {"X": 4.0, "A": 1.0})) == OTHER
+
+
+def _ctx() -> Context:
+    return Context("t.nc", MachineSetup(), Diagnostics(ErrorLevel.IMMEDIATE), "fanuc")
+
+
+def _moves(moves: list[dict[str, float | Expr]]) -> list[Block]:
+    blocks = []
+    for n, given in enumerate(moves):
+        block = Block(n + 1, "", "\n")
+        block.sections = {"Motion": Motion("linear", dict(given))}
+        blocks.append(block)
+    return blocks
+
+
+@given(st.lists(st.one_of(plain_axes, plain_axes, axes.filter(lambda a: not any(isinstance(v, Expr)
+                                                                                for v in a.values()))),
+                max_size=12))
+def test_the_frame_evaluations_point_follows_every_move(moves: list[dict[str, float | Expr]]) -> None:
+    ctx = _ctx()
+    evaluator = FrameEvaluator(ctx)
+    run = ctx.state.extra[RUN_KEY]
+    assert isinstance(run, FrameRun)
+    expected = dict(run.p)
+    for block, given in zip(_moves(moves), moves):
+        assert evaluator.take_move(block) is None
+        expected.update(given)
+        assert run.point() == expected
+
+
+@given(st.lists(st.one_of(plain_axes, plain_axes, axes), max_size=12))
+def test_the_arc_passs_position_follows_every_move(moves: list[dict[str, float | Expr]]) -> None:
+    ctx = _ctx()
+    ctx.state.symbolic = any(isinstance(v, Expr) for given in moves for v in given.values())
+    step = _Arcs(ctx, ArcOption("settle"), _target())
+    rewriter = step.rewriter
+    expected = dict(rewriter.position)
+    for block, given in zip(_moves(moves), moves):
+        assert step.take_move(block) is None
+        expected.update({a: None if isinstance(v, Expr) else v for a, v in given.items()})
+        rewriter.settle()
+        assert rewriter.position == expected
+
+
+def test_one_reading_for_a_run() -> None:
+    ctx = _ctx()
+    assert move_words(ctx) is move_words(ctx)
+
+
+def _target() -> type:
+    from postproc.plugins import default_registry
+    return default_registry().dialect("grbl")
