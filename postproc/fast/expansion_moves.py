@@ -81,6 +81,8 @@ class ExpansionMoves(MoveLane):
         as_written = block.canonical and writer.source_numbers
         text = code
         for axis, value in axes.items():
+            if not isinstance(value, float):
+                return None  # (none: tested above, before a word was spelt)
             if before is not None:
                 was = before.get(axis)
                 if type(was) is float and was == value:
