@@ -22,8 +22,6 @@ from ..output.writer_base import Writer
 from ..rs274.word_numbers import _position
 from ..rs274.writer import MoveLane, WordWriter
 
-MOVE_MODES: Final = ("rapid", "linear")
-"""The motion modes the lane writes: an expansion's straight moves."""
 MOVE_METHODS: Final = ("item_line", "motion_words")
 """What the general path calls to write a straight move of an expansion (``compound``'s loop calls both as
 methods; ``_left_out`` is a module function, ``source_number`` and ``_position`` the lane calls too).
@@ -45,39 +43,34 @@ class ExpansionMoves(MoveLane):
         super().__init__()
         self.writer = writer
         codes = writer.codes
-        self.codes: dict[str, str] = {}
-        """Motion mode -> its code, spelled once: rapid and linear (what the table has)."""
-        for mode in MOVE_MODES:
-            code = codes.spell("motion", mode)
-            if code is not None:
-                self.codes[mode] = code
-        driven = writer.DRIVEN_AXES
-        self.driven: frozenset[str] | None = driven
+        self.rapid = codes.spell("motion", "rapid") or ""
+        self.linear = codes.spell("motion", "linear") or ""
+        """The codes of a rapid and a feed move, spelled once ('': the table has none, the general path
+        refuses the move)."""
+        self.driven: frozenset[str] | None = writer.DRIVEN_AXES
         """The axes the controller drives (None: every one): a move of another is left to the general path,
         which refuses it."""
 
     def line(self, item: Motion, before: dict[str, float | Expr] | None, block: Block) -> str | None:
-        """The move's line, or None."""
-        mode = item.mode
-        if mode is None or item.center is not None or item.radius is not None:
+        """The move's line, or None. Its words are checked before any is spelt: spelling one may change the
+        writer's state (what a rounding carries), so a move left to the general path is spelt there only."""
+        if item.center is not None or item.radius is not None:
             return None
-        code = self.codes.get(mode)
+        mode = item.mode
+        code = self.rapid if mode == "rapid" else self.linear if mode == "linear" else ""
         writer = self.writer
-        if code is None or writer.modal.distance != "absolute":
+        if not code or writer.modal.distance != "absolute":
             return None  # (not absolute: ``item_line`` writes the distance mode's code first)
         axes = item.axes
         driven = self.driven
-        kept = 0
-        for axis, value in axes.items():
-            if type(value) is not float or driven is not None and axis not in driven:
-                return None
-            if before is not None:
-                was = before.get(axis)
-                if type(was) is float and was == value:
-                    continue
-            kept += 1
-        if not kept:
-            return None  # a move with no axis words: ``motion_words`` asks ``left_out`` of it
+        if driven is None:
+            for value in axes.values():
+                if type(value) is not float:
+                    return None
+        else:
+            for axis, value in axes.items():
+                if type(value) is not float or axis not in driven:
+                    return None
         as_written = block.canonical and writer.source_numbers
         text = code
         for axis, value in axes.items():
@@ -88,7 +81,11 @@ class ExpansionMoves(MoveLane):
                 if type(was) is float and was == value:
                     continue
             number = writer.source_number(block, axis, value, False) if as_written else None
-            text += " " + axis + (number if number is not None else _position(writer, axis, value, False))
+            if number is None:
+                number = _position(writer, axis, value, False)
+            text = f"{text} {axis}{number}"
+        if len(text) == len(code):
+            return None  # every axis left out: ``motion_words`` asks ``left_out`` of a move with none
         return text + "\n"
 
 
