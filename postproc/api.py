@@ -116,6 +116,8 @@ def _translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, tar
         writer = writer_class(ctx, src.NAME, dst)
         from .fast.lane import install as install_fast_lane  # (imported with the writer's modules, not at start)
         install_fast_lane(writer)
+        from .fast.expansion_moves import install_expansion  # (likewise)
+        install_expansion(writer)
         if not moved:
             writer.write(sequences.after_lowering(lowered), out)
         else:  # the travel that matters is the moved program's: it is checked before a line leaves

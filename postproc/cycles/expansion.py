@@ -11,7 +11,7 @@ from __future__ import annotations
 from mypy_extensions import mypyc_attr
 
 import abc
-from typing import TYPE_CHECKING, ClassVar, Final, Iterator
+from typing import TYPE_CHECKING, Any, ClassVar, Final, Iterator
 
 from postproc.errors import ConfigError, ProgramError
 from postproc.ir.expr import Expr
@@ -108,12 +108,19 @@ class ToolPath:
 
     def _move(self, mode: str, a: float | None, b: float | None, level: float | None) -> None:
         """A rapid or feed to the given plane position and level (None: where the tool is on that axis);
-        a move shorter than ``EPS`` on every axis is no move."""
-        was_a, was_b, was_n = self.a, self.b, self.n
-        to_a = was_a if a is None else a
-        to_b = was_b if b is None else b
-        to_n = was_n if level is None else level
-        if to_n is None and level is None and to_a is not None and to_b is not None:
+        a move shorter than ``EPS`` on every axis is no move. (The positions are held as the objects they
+        are, ``Any``, never narrowed from ``float | None``: compiled, a narrowed float is unboxed, and each
+        use of it as an object, a word of the move or a field, boxes it anew: six new floats a move.)"""
+        was_a: Any = self.a
+        was_b: Any = self.b
+        was_n: Any = self.n
+        given_a: Any = a
+        given_b: Any = b
+        given_n: Any = level
+        to_a: Any = was_a if given_a is None else given_a
+        to_b: Any = was_b if given_b is None else given_b
+        to_n: Any = was_n if given_n is None else given_n
+        if to_n is None and given_n is None and to_a is not None and to_b is not None:
             # Fanuc's positioning at the level where the tool stands, not known here (after a reference
             # return in cycle mode): a move in the plane alone, the normal axis left where it is
             self.add(Motion(mode, _plane_move(self.axes, to_a, to_b)))
@@ -123,8 +130,8 @@ class ToolPath:
         if to_a is None or to_b is None or to_n is None:
             _unknown(self.axes, to_a, to_b, to_n)
             return
-        if was_a is not None and was_b is not None and was_n is not None and abs(to_a - was_a) < EPS \
-                and abs(to_b - was_b) < EPS and abs(to_n - was_n) < EPS:
+        if was_a is not None and was_b is not None and was_n is not None and _near(to_a, was_a) \
+                and _near(to_b, was_b) and _near(to_n, was_n):
             return
         self.add(Motion(mode, _xyz(self.axes[0], to_a, to_b, to_n)))
         self.a = to_a
@@ -156,6 +163,11 @@ class ToolPath:
         if self.n is not None:
             end[normal] = self.n
         return end
+
+
+def _near(x: float, y: float) -> bool:
+    """Two positions closer than ``EPS`` (one level, one spot)."""
+    return abs(x - y) < EPS
 
 
 def _unknown(axes: tuple[str, str, str], a: float | None, b: float | None, n: float | None) -> None:

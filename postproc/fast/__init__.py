@@ -10,6 +10,8 @@ property test. A plugin declares nothing for it.
 * ``reading``: the reading lanes (``install_reading``), ``plain``: the plain-block lane of the block syntax
   and ``plain_ngc`` the RS274/NGC one (``tests/test_plain_blocks.py``), ``holes``: the next-hole lane of the
   cycle resolver (``tests/test_cycle_repeat.py``).
+* ``expansion_moves``: the expansion-move lane (``install_expansion``), an expanded cycle's straight moves
+  written without the writer's item dispatch (``tests/test_expansion_moves.py``).
 * ``setup_values``: the set-up lane (``plain_record``), a set-up file's plainly spelt values read without
   pydantic, which decides the rest (``tests/test_setup_values.py``).
 

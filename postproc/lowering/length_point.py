@@ -90,14 +90,18 @@ class MachineFrame:
     def __init__(self, setup: MachineSetup) -> None:
         self.declared = declared_offsets(setup, (AXIS,), False)
         self.system = 1  # G54 (or the dialect's first system) at power-on [K: DIALECTS.md, modal defaults]
+        self.offset = offset_beyond_frame(AXIS, self.system, {}, self.declared)[0]
+        """The offset of ``system`` in mm (None: the set-up gives none), found when the system changes: the
+        tool length timing asks ``beyond`` of every block."""
         self.known = True
         self.machine_z = False
         """The programmed Z is unknown since a machine-coordinate move whose offset is not known."""
 
     def follow(self, sections: dict[str, Section]) -> None:
         work = sections.get("WorkOffset")
-        if isinstance(work, WorkOffset):
+        if isinstance(work, WorkOffset) and work.index != self.system:
             self.system = work.index
+            self.offset = offset_beyond_frame(AXIS, self.system, {}, self.declared)[0]
         setting = sections.get("DataSetting")
         if "CoordinateSet" in sections or "FrameChange" in sections or (
                 isinstance(setting, DataSetting) and setting.table.startswith("work_offset")):
@@ -122,7 +126,7 @@ class MachineFrame:
         """The offset in program units; None where it is not known."""
         if not self.known:
             return None
-        value = offset_beyond_frame(AXIS, self.system, {}, self.declared)[0]
+        value = self.offset
         return None if value is None else value / MM_PER_INCH if inch else value
 
 

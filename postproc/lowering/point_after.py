@@ -72,15 +72,20 @@ def compound_end(compound: CompoundMotion) -> dict[str, float | None] | None:
 
 
 def _moves_end(items: list[Section]) -> dict[str, float | None] | None:
-    """``compound_end``'s walk over the items. (A float word is tested as a float first: compiled, that is a
-    type check, where ``isinstance(value, Expr)`` of a float is a generic look-up of ``__class__``.)"""
+    """``compound_end``'s walk over the items, from the last: an axis ends at the first number found for it
+    (an expanded hole's moves name every axis each: a look-up, not a store, for all but the last move's). (A
+    float word is tested as a float first: compiled, that is a type check, where ``isinstance(value, Expr)``
+    of a float is a generic look-up of ``__class__``.)"""
     moved: dict[str, float | None] = {}
-    for item in items:
+    for at in range(len(items) - 1, -1, -1):
+        item = items[at]
         if not isinstance(item, Motion):
             continue
         if item.mode not in MOVES:
             return None
         for axis, value in item.axes.items():
+            if axis in moved:
+                continue
             if isinstance(value, float):
                 moved[axis] = value
             else:

@@ -54,6 +54,17 @@ SectionWriter = Callable[[Any, Any, Block], list[str]]
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
+class MoveLane:
+    """A speed-only shortcut a run installs on its word writer (``postproc.fast.expansion_moves``): ``line``
+    writes a move of an expansion as ``compound`` writes it (``item_line`` of the move less the axes
+    ``_left_out`` leaves out), or answers None (the general path writes it). An object, not a function: the
+    expansion's loop calls it natively."""
+
+    def line(self, item: Motion, before: dict[str, float | Expr] | None, block: Block) -> str | None:
+        raise NotImplementedError
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
 class WordWriter(MotionWords):
     """Writes blocks as address words, spelling every code from the dialect's ``CODES`` table."""
 
@@ -103,6 +114,9 @@ class WordWriter(MotionWords):
         self.expanding = False
         """True while an expansion is written (``compound``): a writer that drops what its controller lacks
         from a block may not drop it from a cycle's motion."""
+        self.move_lane: MoveLane | None = None
+        """A speed-only shortcut the run installed (``postproc.fast.expansion_moves``): ``compound`` offers it
+        each move of an expansion first."""
 
     def write_block(self, block: Block) -> str | None:
         """The text of a block: a block with a ``STRUCTURE`` section as ``structure_block`` writes it, any
@@ -412,9 +426,12 @@ class WordWriter(MotionWords):
         before: dict[str, float | Expr] | None = None
         """The axes of the straight move written last, while the tool stands there: the next straight move
         leaves out the axes it does not change (``_left_out``)."""
+        moves = self.move_lane
         for item in compound.items:
             if isinstance(item, Motion):
-                lines.append(self.item_line(item if before is None else _left_out(item, before), block))
+                line = None if moves is None else moves.line(item, before, block)
+                lines.append(line if line is not None else
+                             self.item_line(item if before is None else _left_out(item, before), block))
                 before = item.axes if _is_straight(item) else None
             else:
                 lines.append(self.item_line(item, block))
