@@ -12,6 +12,7 @@ from __future__ import annotations
 from mypy_extensions import mypyc_attr
 
 from ..syntaxes.comments import CommentSyntax
+from .line_format import LineRule
 
 
 def size(text: str) -> int:
@@ -26,7 +27,7 @@ def size(text: str) -> int:
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
-class ByteLengthLines:
+class ByteLengthLines(LineRule):
     """The rule of every line written for a controller that reads at most ``limit`` bytes a line."""
 
     def __init__(self, limit: int, comments: CommentSyntax, controller: str, refusal: str) -> None:
