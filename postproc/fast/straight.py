@@ -22,7 +22,6 @@ from ..rs274.motion_words import tiny_arc
 from ..rs274.writer import WordWriter
 from ..ir.state import PLANE_AXES
 
-AXES: Final = frozenset("XYZABCUVW")
 LANE_MODES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
 """The motion modes the straight lane writes."""
 STRAIGHT_KEYS: Final = frozenset(("Sequence", "Motion", "Feed"))
@@ -106,15 +105,15 @@ class SourceLane(Lane):
         text = block.text
         if text is None:
             return None
-        for key in sections:
-            if key not in STRAIGHT_KEYS:
-                return None
+        fed = "Feed" in sections
+        if len(sections) != fed + ("Motion" in sections) + ("Sequence" in sections):  # (STRAIGHT_KEYS: three
+            return None  # look-ups, cheaper than a pass over the keys and a set's)
         writer = self.writer
         if self.per_rev_checked and writer.modal.feed_mode == "per_rev":
             return None
         if self.points:
             writer.at_block = block
-        if "Feed" in sections:
+        if fed:
             writer.modal.apply(sections)
         return text + block.eol
 
@@ -140,9 +139,9 @@ class StraightLane(Lane):
             if code is not None:
                 self.codes[mode] = code
                 self.spaced[mode] = f" {code} "
-        driven = writer.DRIVEN_AXES
-        self.driven: frozenset[str] = AXES if driven is None else driven
-        """The axes a move may have to take the lane (another is left to the general path)."""
+        self.driven: frozenset[str] | None = writer.DRIVEN_AXES
+        """The axes the target drives (None: any the source programs, as ``motion_words`` writes them): a
+        move of another is left to the general path, which refuses it."""
         self.per_rev_checked = bool(writer.PER_REV_NEEDS_SPEED)
         """As ``CopyLane.per_rev_checked``."""
 
@@ -204,7 +203,7 @@ class StraightLane(Lane):
         for axis, value in axes.items():
             letter, number = words[at]
             at += 1
-            if letter != axis or letter not in driven or type(value) is not float or not (
+            if letter != axis or driven is not None and letter not in driven or type(value) is not float or not (
                     -SHORT_RANGE < value < SHORT_RANGE if every else as_written(number, value, most)):
                 return None
             read = values.get(letter)  # the number the word reads as: no step changed it. (Both floats: compiled,

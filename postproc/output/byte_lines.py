@@ -43,6 +43,8 @@ class ByteLengthLines(LineRule):
         """Every line of ``text`` is short enough as it is (the test of a usual block, and of an expanded
         cycle's many lines): each line, with the CR of its end, lies within a piece between two LFs."""
         limit = self.limit
+        if len(text) * 4 <= limit:  # a character is at most four bytes written (UTF-8; a kept surrogate one):
+            return True  # a usual block's text passes without ``isascii``, a generic method call compiled
         if text.isascii():
             if len(text) <= limit:
                 return True
