@@ -72,13 +72,13 @@ class CopyLane(Lane):
         text = block.text
         if text is None or not block.canonical:
             return None
-        for key in sections:  # (one pass: of the straight keys only the feed rate is modal)
-            if key not in STRAIGHT_KEYS:
-                return None
+        fed = "Feed" in sections  # (of the straight keys only the feed rate is modal)
+        if len(sections) != fed + ("Motion" in sections) + ("Sequence" in sections):  # as ``SourceLane``
+            return None
         writer = self.writer
         if self.per_rev_checked and writer.modal.feed_mode == "per_rev":
             return None
-        if "Feed" in sections:
+        if fed:
             writer.modal.apply(sections)
         if writer.carry:
             writer.exact_axes(block)
@@ -130,15 +130,18 @@ class StraightLane(Lane):
         super().__init__()
         self.writer = writer
         codes = writer.codes
-        self.codes: dict[str, str] = {}
-        """Motion mode -> its code, spelled once: rapid, linear, cw, ccw (what the table has)."""
-        self.spaced: dict[str, str] = {}
-        """Motion mode -> its code between spaces, as it goes after a block number."""
+        spelled: dict[str, tuple[str, str]] = {}
         for mode in LANE_MODES:
             code = codes.spell("motion", mode)
             if code is not None:
-                self.codes[mode] = code
-                self.spaced[mode] = f" {code} "
+                spelled[mode] = (code, f" {code} ")
+        self.rapid = spelled.get("rapid")
+        """The rapid move's code, spelled once, and the code between spaces (as it goes after a block number);
+        None: the table has none. Likewise the feed and arc moves': four fields, not a dictionary (compared
+        with the mode, not looked up: ~100 instructions a block)."""
+        self.linear = spelled.get("linear")
+        self.cw = spelled.get("cw")
+        self.ccw = spelled.get("ccw")
         self.driven: frozenset[str] | None = writer.DRIVEN_AXES
         """The axes the target drives (None: any the source programs, as ``motion_words`` writes them): a
         move of another is left to the general path, which refuses it."""
@@ -160,21 +163,31 @@ class StraightLane(Lane):
         axes = motion.axes
         if mode is None or not axes:
             return None
-        code = self.codes.get(mode)
-        if code is None:
-            return None
         center = motion.center
         radius = motion.radius
         arc = 0
-        if center is not None or radius is not None:
-            if mode != "cw" and mode != "ccw" or not _plain_arc(axes, center, writer.modal.plane) \
+        if mode == "linear" or mode == "rapid":
+            if center is not None or radius is not None:
+                return None
+            spelled = self.linear if mode == "linear" else self.rapid
+        elif mode == "cw" or mode == "ccw":
+            if center is None and radius is None or not _plain_arc(axes, center, writer.modal.plane) \
                     or center is not None and tiny_arc(center, writer.MIN_ARC_RADIUS[writer.modal.units == "inch"]):
                 return None
             arc = len(center) if center is not None else 1
-        elif mode != "rapid" and mode != "linear":
+            spelled = self.cw if mode == "cw" else self.ccw
+        else:
             return None
-        sequence = sections.get("Sequence")
-        feed = sections.get("Feed")
+        if spelled is None:
+            return None
+        code, spaced = spelled
+        # The Motion and at most a block number and a feed rate: no look-up for what the count rules out.
+        count = len(sections)
+        sequence = feed = None
+        if count > 1:
+            sequence = sections.get("Sequence")
+            if sequence is None or count > 2:
+                feed = sections.get("Feed")
         besides = (sequence is not None) + (feed is not None)
         words = block.words
         at = 0
@@ -191,7 +204,7 @@ class StraightLane(Lane):
             at = 1
             head = len(number) + 1
         coded = at < len(words) and words[at][0] == "G"  # the block's own motion code: it is rewritten
-        if len(sections) != 1 + besides or len(words) != len(axes) + besides + arc + coded:
+        if count != 1 + besides or len(words) != len(axes) + besides + arc + coded:
             return None
         written = 0
         if coded:
@@ -240,5 +253,5 @@ class StraightLane(Lane):
             start = head + 1 if head else 0
             return f"{text[:start]}{code}{text[start + written:]}{eol}"
         if head:  # the first space of a canonical block is the one after its block number
-            return text.replace(" ", self.spaced[mode], 1) + eol  # (one copy: two slices and a join cost ~450 more)
+            return text.replace(" ", spaced, 1) + eol  # (one copy: two slices and a join cost ~450 more)
         return f"{code} {text}{eol}"
