@@ -16,7 +16,7 @@ RULES: list[LineRule] = [GRBL_LINES, LINUXCNC_LINES]
 PIECES = st.sampled_from([
     "G1 X1.5 Y-2.25", "G83 X10. Y5. Z-12. R2. Q3.", " ", "(A COMMENT)", ";NOTE", "\n", "\r\n", "\r", "\x0b",
     "\x0c", "\x1c", "?", "!", "~", "\x7f", "\u00d8", "\u00e9", "\u2028", "\x85", "X" * 40, "Y" * 79, "Z" * 126,
-    "(" + "C" * 120 + ")",
+    "(" + "C" * 120 + ")", "\U0001f600", "\udcff", "\ud800",  # four bytes; a kept byte (one); a lone surrogate (three)
 ])
 TEXTS = st.lists(PIECES, max_size=30).map("".join)
 
@@ -51,3 +51,12 @@ def test_a_long_line_among_short_ones_fails_the_quick_test() -> None:
     assert not GRBL_LINES.fits("G0 X1.\n" + grbl_long + "\nG0 Z2.\n")
     assert not LINUXCNC_LINES.fits("G0 X1.\n" + linuxcnc_long + "\nG0 Z2.\n")
     assert not GRBL_LINES.fits("G0 X1.\n(WHERE?)\n")
+
+
+def test_a_short_text_passes_whatever_its_characters() -> None:
+    """``ByteLengthLines.fits`` passes a text of at most a quarter of its limit in characters without looking at
+    them (a character is at most four bytes written): at that bound, four-byte characters fill the line exactly."""
+    limit = LINUXCNC_LINES.limit
+    full, over = "\U0001f600" * (limit // 4), "\U0001f600" * (limit // 4 + 1)
+    assert LINUXCNC_LINES.fits(full) and kept_as_written(LINUXCNC_LINES, full)
+    assert not LINUXCNC_LINES.fits(over) and not kept_as_written(LINUXCNC_LINES, over)

@@ -22,7 +22,6 @@ from ..rs274.motion_words import tiny_arc
 from ..rs274.writer import WordWriter
 from ..ir.state import PLANE_AXES
 
-AXES: Final = frozenset("XYZABCUVW")
 LANE_MODES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
 """The motion modes the straight lane writes."""
 STRAIGHT_KEYS: Final = frozenset(("Sequence", "Motion", "Feed"))
@@ -71,15 +70,15 @@ class CopyLane(Lane):
         """The block's source line, or None."""
         sections = block.sections
         text = block.text
-        if text is None:
+        if text is None or not block.canonical:
             return None
-        for key in sections:  # (one pass: of the straight keys only the feed rate is modal)
-            if key not in STRAIGHT_KEYS:
-                return None
+        fed = "Feed" in sections  # (of the straight keys only the feed rate is modal)
+        if len(sections) != fed + ("Motion" in sections) + ("Sequence" in sections):  # as ``SourceLane``
+            return None
         writer = self.writer
         if self.per_rev_checked and writer.modal.feed_mode == "per_rev":
             return None
-        if "Feed" in sections:
+        if fed:
             writer.modal.apply(sections)
         if writer.carry:
             writer.exact_axes(block)
@@ -89,7 +88,8 @@ class CopyLane(Lane):
 @mypyc_attr(allow_interpreted_subclasses=True)
 class SourceLane(Lane):
     """A straight block copied to its own dialect, not normalised, is its source line and end of line, as
-    ``words_block`` copies a block (installed where the writer copies its dialect's blocks: ``copy_ok``)."""
+    ``words_block`` copies a block (installed where the writer copies its dialect's blocks: ``copy_ok``),
+    canonical or not (its words are not read)."""
 
     def __init__(self, writer: WordWriter) -> None:
         super().__init__()
@@ -105,15 +105,15 @@ class SourceLane(Lane):
         text = block.text
         if text is None:
             return None
-        for key in sections:
-            if key not in STRAIGHT_KEYS:
-                return None
+        fed = "Feed" in sections
+        if len(sections) != fed + ("Motion" in sections) + ("Sequence" in sections):  # (STRAIGHT_KEYS: three
+            return None  # look-ups, cheaper than a pass over the keys and a set's)
         writer = self.writer
         if self.per_rev_checked and writer.modal.feed_mode == "per_rev":
             return None
         if self.points:
             writer.at_block = block
-        if "Feed" in sections:
+        if fed:
             writer.modal.apply(sections)
         return text + block.eol
 
@@ -130,15 +130,21 @@ class StraightLane(Lane):
         super().__init__()
         self.writer = writer
         codes = writer.codes
-        self.codes: dict[str, str] = {}
-        """Motion mode -> its code, spelled once: rapid, linear, cw, ccw (what the table has)."""
+        spelled: dict[str, tuple[str, str]] = {}
         for mode in LANE_MODES:
             code = codes.spell("motion", mode)
             if code is not None:
-                self.codes[mode] = code
-        driven = writer.DRIVEN_AXES
-        self.driven: frozenset[str] = AXES if driven is None else driven
-        """The axes a move may have to take the lane (another is left to the general path)."""
+                spelled[mode] = (code, f" {code} ")
+        self.rapid = spelled.get("rapid")
+        """The rapid move's code, spelled once, and the code between spaces (as it goes after a block number);
+        None: the table has none. Likewise the feed and arc moves': four fields, not a dictionary (compared
+        with the mode, not looked up: ~100 instructions a block)."""
+        self.linear = spelled.get("linear")
+        self.cw = spelled.get("cw")
+        self.ccw = spelled.get("ccw")
+        self.driven: frozenset[str] | None = writer.DRIVEN_AXES
+        """The axes the target drives (None: any the source programs, as ``motion_words`` writes them): a
+        move of another is left to the general path, which refuses it."""
         self.per_rev_checked = bool(writer.PER_REV_NEEDS_SPEED)
         """As ``CopyLane.per_rev_checked``."""
 
@@ -148,7 +154,8 @@ class StraightLane(Lane):
         sections = block.sections
         text = block.text
         motion = sections.get("Motion")
-        if not isinstance(motion, Motion) or text is None or writer.carry or not writer.source_numbers:
+        if not isinstance(motion, Motion) or text is None or not block.canonical or writer.carry \
+                or not writer.source_numbers:
             return None
         if self.per_rev_checked and writer.modal.feed_mode == "per_rev":
             return None
@@ -156,21 +163,31 @@ class StraightLane(Lane):
         axes = motion.axes
         if mode is None or not axes:
             return None
-        code = self.codes.get(mode)
-        if code is None:
-            return None
         center = motion.center
         radius = motion.radius
         arc = 0
-        if center is not None or radius is not None:
-            if mode != "cw" and mode != "ccw" or not _plain_arc(axes, center, writer.modal.plane) \
+        if mode == "linear" or mode == "rapid":
+            if center is not None or radius is not None:
+                return None
+            spelled = self.linear if mode == "linear" else self.rapid
+        elif mode == "cw" or mode == "ccw":
+            if center is None and radius is None or not _plain_arc(axes, center, writer.modal.plane) \
                     or center is not None and tiny_arc(center, writer.MIN_ARC_RADIUS[writer.modal.units == "inch"]):
                 return None
             arc = len(center) if center is not None else 1
-        elif mode != "rapid" and mode != "linear":
+            spelled = self.cw if mode == "cw" else self.ccw
+        else:
             return None
-        sequence = sections.get("Sequence")
-        feed = sections.get("Feed")
+        if spelled is None:
+            return None
+        code, spaced = spelled
+        # The Motion and at most a block number and a feed rate: no look-up for what the count rules out.
+        count = len(sections)
+        sequence = feed = None
+        if count > 1:
+            sequence = sections.get("Sequence")
+            if sequence is None or count > 2:
+                feed = sections.get("Feed")
         besides = (sequence is not None) + (feed is not None)
         words = block.words
         at = 0
@@ -187,7 +204,7 @@ class StraightLane(Lane):
             at = 1
             head = len(number) + 1
         coded = at < len(words) and words[at][0] == "G"  # the block's own motion code: it is rewritten
-        if len(sections) != 1 + besides or len(words) != len(axes) + besides + arc + coded:
+        if count != 1 + besides or len(words) != len(axes) + besides + arc + coded:
             return None
         written = 0
         if coded:
@@ -199,7 +216,7 @@ class StraightLane(Lane):
         for axis, value in axes.items():
             letter, number = words[at]
             at += 1
-            if letter != axis or letter not in driven or type(value) is not float or not (
+            if letter != axis or driven is not None and letter not in driven or type(value) is not float or not (
                     -SHORT_RANGE < value < SHORT_RANGE if every else as_written(number, value, most)):
                 return None
             read = values.get(letter)  # the number the word reads as: no step changed it. (Both floats: compiled,
@@ -235,6 +252,6 @@ class StraightLane(Lane):
         if coded:
             start = head + 1 if head else 0
             return f"{text[:start]}{code}{text[start + written:]}{eol}"
-        if head:
-            return f"{text[:head]} {code}{text[head:]}{eol}"
+        if head:  # the first space of a canonical block is the one after its block number
+            return text.replace(" ", spaced, 1) + eol  # (one copy: two slices and a join cost ~450 more)
         return f"{code} {text}{eol}"

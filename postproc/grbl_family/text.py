@@ -29,6 +29,7 @@ from typing import Callable, Final
 
 from mypy_extensions import mypyc_attr
 
+from postproc.output.line_format import LineRule
 from postproc.syntaxes.comments import CommentSyntax
 
 GRBL_LINE_BUFFER_SIZE: Final = 80
@@ -39,27 +40,28 @@ REALTIME = re.compile(r"[?!~\x00-\x08\x0b\x0c\x0e-\x1f\x7f]")
 """Characters grbl acts on (or that have no place in a line): replaced in what is written."""
 _SYMBOLS = {"\u00d8": "DIA", "\u00f8": "DIA", "\u2300": "DIA", "\u00b0": "DEG", "\u00b1": "+/-", "\u00b5": "U",
             "\u2013": "-", "\u2014": "-", "\u2018": "'", "\u2019": "'", "\u201c": '"', "\u201d": '"'}
-_MARKED: Final = bytes(0 if code < 128 and not REALTIME.match(chr(code)) else 1 for code in range(256))
+_MARKED: Final = bytes(code if code < 128 and not REALTIME.match(chr(code)) else code ^ 0x80 for code in range(256))
 """``bytes.translate`` table: the ASCII characters grbl takes as they are (those ``REALTIME`` does not
-match) to 0, every other byte to 1."""
+match) to themselves, every other byte to another: a text of plain bytes translates to itself."""
 _NUMBER = re.compile(r"([-+]?)(\d*)\.?(\d*)")
 _WORD_NUMBER = re.compile(r"(?<=[A-Za-z])\s*[-+]?(?:\d+\.?\d*|\.\d+)")
 _COMMENT = re.compile(r"\([^)]*\)?|;.*")
 
 
 def plain_ascii(text: str) -> bool:
-    """``text`` is ASCII without a character of ``REALTIME``: no byte of it is marked (a byte loop in C.
-    Deleting the plain bytes instead, ``translate(None, delete)``, builds a table of 256 entries a call:
-    1,500 instructions, a twentieth of a written block's cost, measured with callgrind). Text beyond ASCII
-    fails its encoding (a comment's rare accent or a lone surrogate: an exception, a few thousand
-    instructions): ``str.isascii`` first was a generic method call compiled, and ``encode("ascii", "replace")``
-    mypyc's general ``CPy_Encode``; the strict ASCII encoding is a direct call (-256 instructions a call,
-    callgrind of a mypyc build of the three forms)."""
+    """``text`` is ASCII without a character of ``REALTIME``: its bytes translate to themselves (a byte loop
+    in C; a translation that changes nothing is the bytes themselves, so the comparison is one of identity:
+    ~125 instructions a line fewer than testing the translation for a marked byte, callgrind). Deleting the
+    plain bytes instead, ``translate(None, delete)``, builds a table of 256 entries a call: 1,500
+    instructions. Text beyond ASCII fails its encoding (a comment's rare accent or a lone surrogate: an
+    exception, a few thousand instructions): ``str.isascii`` first was a generic method call compiled, and
+    ``encode("ascii", "replace")`` mypyc's general ``CPy_Encode``; the strict ASCII encoding is a direct call
+    (-256 instructions a call, callgrind of a mypyc build of the three forms)."""
     try:
         data = text.encode("ascii")
     except UnicodeEncodeError:
         return False
-    return 1 not in data.translate(_MARKED)  # an int: no TypeError tried first
+    return data.translate(_MARKED) == data
 
 
 def grbl_safe(text: str) -> str:
@@ -117,7 +119,7 @@ def shortened(line: str) -> str:
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
-class GrblLines:
+class GrblLines(LineRule):
     """The rules of every line written for a controller of the family (``postproc.output.line_format.LineRule``):
     ``name`` and ``controller`` name it in messages (``grbl``, ``grbl 1.1``), ``buffer_size`` is its ``LINE_BUFFER_SIZE`` (the characters kept,
     and a terminator), ``count`` says which characters of a line its protocol layer keeps, ``counted``

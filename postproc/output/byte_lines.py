@@ -12,6 +12,7 @@ from __future__ import annotations
 from mypy_extensions import mypyc_attr
 
 from ..syntaxes.comments import CommentSyntax
+from .line_format import LineRule
 
 
 def size(text: str) -> int:
@@ -26,7 +27,7 @@ def size(text: str) -> int:
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
-class ByteLengthLines:
+class ByteLengthLines(LineRule):
     """The rule of every line written for a controller that reads at most ``limit`` bytes a line."""
 
     def __init__(self, limit: int, comments: CommentSyntax, controller: str, refusal: str) -> None:
@@ -42,6 +43,8 @@ class ByteLengthLines:
         """Every line of ``text`` is short enough as it is (the test of a usual block, and of an expanded
         cycle's many lines): each line, with the CR of its end, lies within a piece between two LFs."""
         limit = self.limit
+        if len(text) * 4 <= limit:  # a character is at most four bytes written (UTF-8; a kept surrogate one):
+            return True  # a usual block's text passes without ``isascii``, a generic method call compiled
         if text.isascii():
             if len(text) <= limit:
                 return True

@@ -31,7 +31,8 @@ class Displacement:
 
     def __init__(self, increments: Mapping[str, str], machine_axes: frozenset[str]) -> None:
         self.axes: set[str] = set()
-        """The displaced axes (empty: every axis is where the source puts it)."""
+        """The displaced axes (empty: every axis is where the source puts it). One set for the run, changed in
+        place, never replaced: the writer's loop holds it (``Writer._write``)."""
         self.line = 0
         self.incremental = False
         """The distance mode of the blocks written so far (``note``)."""

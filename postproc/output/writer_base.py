@@ -64,8 +64,8 @@ def _only_comments(sections: dict[str, Any]) -> bool:
 
 @mypyc_attr(allow_interpreted_subclasses=True)
 class Lane:
-    """A speed-only shortcut a run installs on its writer (``postproc.fast``): ``write`` writes a canonical
-    source block as ``write_block`` would, or answers None (the general path writes it). An object, not a
+    """A speed-only shortcut a run installs on its writer (``postproc.fast``): ``write`` writes a block as
+    ``write_block`` would, or answers None (the general path writes it). An object, not a
     function: the writer's loop calls it natively (compiled: a bound method's call cost ~200 instructions a
     block)."""
 
@@ -83,8 +83,8 @@ class Writer(abc.ABC):
         self.target = target
         """The dialect written, whose capability flags the writer reads (None: every flag holds)."""
         self.lane: Lane | None = None
-        """A speed-only shortcut the run installed (``postproc.fast``): ``write`` offers it a canonical source
-        block first; it writes what ``write_block`` would, or answers None."""
+        """A speed-only shortcut the run installed (``postproc.fast``): ``write`` offers it every block first;
+        it writes what ``write_block`` would, or answers None."""
         self.set_aside: list[str] | None = None
         """Where ``write`` puts each block's text while the writer sets a part of the program aside to write
         it elsewhere (a subprogram the dialect writes after the main program, in ``finish``); None: out."""
@@ -131,10 +131,14 @@ class Writer(abc.ABC):
         """A text formatted (``LineFormat.line``), to the output."""
         generated = sequences.per_block
         displacement = None
+        displaced: set[str] = set()
+        """``displacement.axes`` (one set for the run, changed in place), held here: ``Displacement`` runs
+        interpreted, and its attribute read cost ~160 instructions a block."""
         dropped: list[int] = []
         """The source lines whose moves a lowering step dropped (``DROPPED_MOVES``, the list the step appends to)."""
         if self.ctx.on_unsupported == "warn":
             displacement = self.displacement = Displacement(self.ctx.increments, self.ctx.axis_words)
+            displaced = displacement.axes
             dropped = self.ctx.run_data.setdefault(DROPPED_MOVES, [])
         footer: str | None = None
         started = False
@@ -155,11 +159,11 @@ class Writer(abc.ABC):
                 self._emit_template(emit, output_map, line_format, getattr(text_of, "template"), getattr(text_of, "text"))
                 continue
             failed = False
-            if displacement is not None and (displacement.axes or dropped or "DistanceMode" in block.sections) \
+            if displacement is not None and (displaced or dropped or "DistanceMode" in block.sections) \
                     and _displaced(self, displacement, block, dropped):
                 continue  # (the common block, no axis displaced, nothing dropped, is not _displaced's: no call)
             try:
-                text = lane.write(block) if lane is not None and block.canonical else None
+                text = lane.write(block) if lane is not None else None
                 if text is None:
                     text = write_block(block)
             except UnsupportedError as err:

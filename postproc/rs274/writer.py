@@ -201,7 +201,10 @@ class WordWriter(MotionWords):
                 raise ProgramError("--renumber cannot renumber a program that jumps to block numbers (GOTO, "
                                    "a return to a block number): the numbers it names would change",
                                    self.ctx.at(block))
-        canonical = self._canonical
+        # A number as written that is already explicit and exact keeps its text (and skips a float round trip):
+        # digits the user wrote are never rounded away by normalising. ``canonical_number`` is called
+        # directly: a bound method of a plugin's (interpreted) writer was a Python call a word (~2k instructions).
+        leading_zero = self.leading_zero
         number = self.number
         places = (self.mm_places if self.modal.units == "mm" else self.inch_places) if self.rounding else None
         for letter, num in block.words:
@@ -210,12 +213,13 @@ class WordWriter(MotionWords):
                 continue
             value = values.get(up)
             own = places is not None and up in places
-            if isinstance(value, float) and up in axes and (axes[up] and up in self.carry or own or not canonical(num)):
+            if isinstance(value, float) and up in axes and (axes[up] and up in self.carry or own
+                                                            or not canonical_number(num, MAX_PLACES, leading_zero)):
                 parts.append(up + _position(self, up, value, axes[up]))
-            elif type(value) is float and (own or not canonical(num)):  # an expression keeps its text
+            elif type(value) is float and (own or not canonical_number(num, MAX_PLACES, leading_zero)):
                 parts.append(up + (self.speed(value) if up == "S" and own
                                    else self.feed_number(value, block) if up == "F" else number(value, up)))
-            else:
+            else:  # a canonical number, or an expression, keeps its text
                 parts.append(up + num)
         if renumber and block.words and "ProgramStart" not in sections:
             parts.insert(1 if skip is not None else 0, f"N{renumber}")
@@ -229,11 +233,6 @@ class WordWriter(MotionWords):
         if comments is not None:
             parts.extend(self.comment(t) for t in comments.texts)  # type: ignore[attr-defined]
         return " ".join(parts)
-
-    def _canonical(self, num: str) -> bool:
-        """True when a number as written is already explicit and exact: keep its text (and skip a float
-        round trip). Digits the user wrote are never rounded away by normalising."""
-        return canonical_number(num, MAX_PLACES, self.leading_zero)
 
     def generate(self, block: Block) -> str:
         """Generate a block (and any lines a compound motion adds) from its sections; with
