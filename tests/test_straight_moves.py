@@ -306,8 +306,8 @@ def test_canonical_numbers_have_at_most_max_places() -> None:
     """``StraightLane`` relies on it: a writer exact to ``MAX_PLACES`` places writes every canonical number
     as written, so only its magnitude is tested (``postproc.numbers.SHORT_RANGE``)."""
     from postproc.numbers import CANONICAL_BLOCK, MAX_PLACES
-    from postproc.rs274.canonical_line import scan
+    from postproc.rs274.canonical_line import CANONICAL, scan_words
 
     most, more = "X0." + "1" * MAX_PLACES, "X0." + "1" * (MAX_PLACES + 1)
     assert CANONICAL_BLOCK.fullmatch(most) and not CANONICAL_BLOCK.fullmatch(more)
-    assert scan(most) and not scan(more)
+    assert scan_words(most)[0] & CANONICAL and not scan_words(more)[0] & CANONICAL
