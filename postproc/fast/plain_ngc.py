@@ -26,7 +26,7 @@ from ..ir import Block, Feed
 from ..rs274.codes import g_key
 from ..rs274.ngc_block_syntax import _STATE_KEY as NO_MOTION_KEY, NgcWordBlockSyntax
 from .plain import (LETTER_ARC, LETTER_AXIS, LETTER_F, LETTER_G, LETTER_KIND, LETTER_N, MOTION_MODES,
-                    plain_motion, values_of)
+                    plain_motion, fill_values)
 
 _UPPER: Final = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
 _FEED_MODES: Final = frozenset(("linear", "cw", "ccw"))
@@ -128,17 +128,16 @@ class NgcPlainLane(BlockLane):
                 mode = state.motion
                 if mode is None:
                     return False  # the general path explains the error
-            values = values_of(axes, sequence, others)
             if mode is not None:
                 if mode in self.own_motion:
                     return False  # the dialect reads the block further itself (``after_sections``)
-                motion = plain_motion(values, axes, mode, arc_words)
+                motion = plain_motion(others, axes, mode, arc_words)
                 if motion is None:
                     return False
                 block.sections["Motion"] = motion
             elif arc_words:
                 return False  # I/J/K/R with no motion: the general path refuses it
-            block.values = values
+            fill_values(block.values, axes, sequence, others)
             if others is not None and fed:
                 block.sections["Feed"] = Feed(others["F"])
             return True
