@@ -123,10 +123,13 @@ class PlainLane(BlockLane):
                 break
         else:
             if cycle:
-                fill_values(block.values, axes, sequence_value, others)
+                block.values = values_of(axes, sequence_value, others)
                 if axes:
                     block.sections["Motion"] = Motion(None, axes)
-                    self.tell_point_mix(block, ctx, axes, bare)
+                    if bare is None:
+                        _saw_pointed(ctx, axes, block.line)
+                    else:
+                        _tell_point_mix(block, ctx, axes, bare, self.in_units)
                 return True
             if mode is None and axes:
                 mode = ctx.state.motion
@@ -136,14 +139,17 @@ class PlainLane(BlockLane):
                 motion = plain_motion(others, axes, mode, arc_words)
                 if motion is None:
                     return False
-                fill_values(block.values, axes, sequence_value, others)
+                block.values = values_of(axes, sequence_value, others)
                 block.sections["Motion"] = motion
                 if axes:
-                    self.tell_point_mix(block, ctx, axes, bare)
+                    if bare is None:
+                        _saw_pointed(ctx, axes, block.line)
+                    else:
+                        _tell_point_mix(block, ctx, axes, bare, self.in_units)
             elif arc_words:
                 return False  # I/J/K/R with no motion: the general path refuses it
             else:
-                fill_values(block.values, axes, sequence_value, others)
+                block.values = values_of(axes, sequence_value, others)
             if others is not None and "F" in others:
                 block.sections["Feed"] = Feed(others["F"])
             return True
@@ -166,37 +172,17 @@ class PlainLane(BlockLane):
         divisor = increments_divisor(ctx, ctx.state.units)
         return int(num) / divisor if divisor else float(int(num))
 
-    def tell_point_mix(self, block: Block, ctx: Context, axes: dict[str, float | Expr],
-                       bare: dict[str, str] | None) -> None:
-        """Tell the point-mix check (``postproc.rs274.point_mix``), while it still looks, of the block's axis
-        words in word order, each with or without its decimal point, as the general path tells it (which does
-        only under least-increment input: ``point_mix`` is None otherwise)."""
-        if bare is None:
-            _saw_pointed(ctx, axes, block.line)
-        elif ctx.point_mix is not None and not self.in_units:
-            mix = point_mix(ctx)
-            if mix is not None:
-                units = ctx.state.units
-                for up, value in axes.items():
-                    num = bare.get(up)
-                    if num is None:
-                        mix.saw_pointed(ctx, up, block.line)
-                    else:
-                        mix.saw_bare(ctx, block, up, num, cast(float, value), units)
 
-
-def fill_values(values: dict[str, float | int | Expr], axes: dict[str, float | Expr], sequence: object,
-                others: dict[str, float | Expr] | None) -> None:
-    """Give a plain block's ``Block.values`` (empty: the lane reads a block without values) its axis words', its
-    block number's and its other words' (in that order: the general path's is the words', and no reader of
-    ``values`` depends on it). Filled in place: an update of an empty dictionary clones the axes' table as a
-    copy does, without a new dictionary a block and the freeing of the empty one (~100 instructions)."""
-    store = cast("dict[str, object]", values)
-    store.update(axes)
+def values_of(axes: dict[str, float | Expr], sequence: object, others: dict[str, float | Expr] | None
+              ) -> dict[str, float | int | Expr]:
+    """A plain block's ``Block.values``: its axis words', its block number's and its other words' (in that
+    order: the general path's is the words', and no reader of ``values`` depends on it)."""
+    values = cast("dict[str, object]", axes.copy())
     if sequence is not None:
-        store["N"] = sequence
+        values["N"] = sequence
     if others is not None:
-        store.update(others)
+        values.update(others)
+    return cast("dict[str, float | int | Expr]", values)
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -246,6 +232,25 @@ def plain_motion(others: dict[str, float | Expr] | None, axes: dict[str, float |
     elif arc_words:
         return None  # I/J/K/R beside a straight move
     return Motion(mode, axes, center, radius)
+
+
+def _tell_point_mix(block: Block, ctx: Context, axes: dict[str, float | Expr], bare: dict[str, str],
+                    in_units: bool) -> None:
+    """Tell the point-mix check (``postproc.rs274.point_mix``), while it still looks, of the axis words of a block
+    with point-less ones (``bare``), in word order, each with or without its decimal point, as the general path
+    tells it (which does only under least-increment input: ``point_mix`` is None otherwise, and where the dialect
+    reads point-less numbers in program units, ``in_units``)."""
+    if ctx.point_mix is None or in_units:
+        return
+    mix = point_mix(ctx)
+    if mix is not None:
+        units = ctx.state.units
+        for up, value in axes.items():
+            num = bare.get(up)
+            if num is None:
+                mix.saw_pointed(ctx, up, block.line)
+            else:
+                mix.saw_bare(ctx, block, up, num, cast(float, value), units)
 
 
 def _saw_pointed(ctx: Context, axes: dict[str, float | Expr], line: int) -> None:

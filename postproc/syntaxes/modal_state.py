@@ -91,7 +91,9 @@ class ModalStateSyntax(Syntax):
             # overwrite these: an absolute number's is the same, a refused axis makes every word's unknown.
             store = cast("dict[str, object]", state.position)
             for letter, value in words_read.items():
-                if type(value) is not float or letter not in words:
+                number = type(value) is float  # (a flag, not a test on ``value``: narrowed, it would be unboxed
+                # and boxed again, a new float a word, ~140 instructions a block)
+                if not number or letter not in words:
                     break
                 store[letter] = value
             else:
@@ -199,13 +201,12 @@ def _lathe_move(ctx: Context, motion: Motion) -> None:
 
 
 def _numbers(values: dict[str, float | Expr]) -> dict[str, float] | None:
-    """The words' values as numbers, or None when one is computed (known only when the program runs)."""
-    numbers: dict[str, float] = {}
-    for letter, value in values.items():
-        if isinstance(value, Expr):
+    """The words' values as numbers (the dictionary itself: no copy an arc), or None when one is computed (known
+    only when the program runs)."""
+    for value in values.values():
+        if type(value) is not float and isinstance(value, Expr):  # (a float first: it is cheaper)
             return None
-        numbers[letter] = value
-    return numbers
+    return cast("dict[str, float]", values)
 
 
 def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
@@ -222,7 +223,8 @@ def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
     axes = _numbers(motion.axes)
     center = _numbers(motion.center) if motion.center else {}
     radius = motion.radius
-    if axes is None or center is None or isinstance(radius, Expr):
+    if axes is None or center is None or (
+            radius is not None and type(radius) is not float and isinstance(radius, Expr)):
         return  # a computed word (a symbolic program): the arc is checked when the program runs
     incremental = state.distance == "incremental"
     increments = ctx.increments  # a lathe's U/W: increments of X/Z beside the absolute words
@@ -243,13 +245,14 @@ def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
     e1, e2 = axes.get(a1), axes.get(a2)
     e1 = s1 if e1 is None else s1 + e1 if incremental else e1
     e2 = s2 if e2 is None else s2 + e2 if incremental else e2
-    for letter, axis in increments.items():
-        step = axes.get(letter)
-        if step is not None:
-            if axis == a1:
-                e1 += step
-            elif axis == a2:
-                e2 += step
+    if increments:  # (a mill's are none: no method call an arc)
+        for letter, axis in increments.items():
+            step = axes.get(letter)
+            if step is not None:
+                if axis == a1:
+                    e1 += step
+                elif axis == a2:
+                    e2 += step
     if ctx.diameter:  # a lathe's X words are diameters, the centre offset I a radius
         if a1 == "X":
             s1, e1 = s1 / 2.0, e1 / 2.0
