@@ -25,7 +25,7 @@ import postproc.fast.reading as reading
 from postproc.api import read_program
 from postproc.errors import Diagnostics, ErrorList
 from postproc.fast.reading import install_reading
-from postproc.fast.plain import PlainLane, PlainLatheLane
+from postproc.fast.plain import PlainLane, PlainLatheLane, whole_number
 from postproc.fast.plain_ngc import NgcPlainLane
 from postproc.ir import Block
 from postproc.plugins import default_registry
@@ -206,6 +206,16 @@ def test_point_less_words_take_the_lane() -> None:
     assert taken == [2, 3, 4, 5]
     assert "('X', 1.5), ('Y', 2.5)" in shown and "('I', -1.0), ('J', 0.0)" in shown and "('R', 5.0)" in shown
     assert "p.nc:3:5" in shown and "X1500 has no decimal point" in shown
+
+
+@given(num=st.one_of(st.integers(min_value=0, max_value=10 ** 20).map(str),
+                     st.from_regex(r"[+-]?[0-9]{1,20}", fullmatch=True)))
+@example(num="999999999999999999")  # 18 digits: summed
+@example(num="9999999999999999999")  # 19: by int
+@example(num="0010")
+def test_a_block_number_reads_as_int_reads_it(num: str) -> None:
+    """The lanes' block number (``whole_number``) is ``int``'s, summed for plain digits."""
+    assert whole_number(num) == int(num)
 
 
 def test_the_lane_is_chosen_where_the_base_reads() -> None:

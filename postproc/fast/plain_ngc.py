@@ -27,7 +27,7 @@ from ..numbers import decimal_value
 from ..rs274.codes import g_key
 from ..rs274.ngc_block_syntax import _STATE_KEY as NO_MOTION_KEY, NgcWordBlockSyntax
 from .plain import (LETTER_ARC, LETTER_AXIS, LETTER_F, LETTER_G, LETTER_KIND, LETTER_N, MOTION_MODES,
-                    plain_motion, values_of)
+                    plain_motion, values_of, whole_number)
 
 _UPPER: Final = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
 _FEED_MODES: Final = frozenset(("linear", "cw", "ccw"))
@@ -93,7 +93,7 @@ class NgcPlainLane(BlockLane):
             if kind == LETTER_N:
                 if "." in num or self.n_first and not (first and _starts_with_n(block.text or "")):
                     break  # a fractional N, or one the N-first rule looks at: the general path
-                sequence = int(num)
+                sequence = whole_number(num)
             elif kind == LETTER_G and mode is None:
                 found = self.motions.get(num)
                 if found is None:
