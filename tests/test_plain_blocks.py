@@ -23,11 +23,13 @@ from hypothesis import strategies as st
 
 import postproc.fast.reading as reading
 from postproc.api import read_program
-from postproc.errors import ErrorList
-from postproc.fast.plain import PlainLane, PlainLatheLane
+from postproc.errors import Diagnostics, ErrorList
+from postproc.fast.reading import install_reading
+from postproc.fast.plain import PlainLane, PlainLatheLane, whole_number
 from postproc.fast.plain_ngc import NgcPlainLane
 from postproc.ir import Block
 from postproc.plugins import default_registry
+from postproc.reading import gc_paused, read_blocks
 from postproc.rs274.block_syntax import WordBlockSyntax
 from postproc.setup.machine_setup import MachineSetup
 
@@ -64,12 +66,18 @@ def lanes(make: Any) -> Iterator[None]:
         yield
 
 
-def _read(program: list[str], dialect: str, machine: str) -> str:
+def _read(program: list[str], dialect: str, machine: str, setup: MachineSetup | None = None) -> str:
+    """The blocks read, then the warnings (the point-mix check's among them), or the errors."""
+    diagnostics = Diagnostics()
     try:
-        blocks = read_program([line + "\n" for line in program], file="p.nc", dialect=dialect, setup=_setup(machine))
+        with gc_paused():
+            _, stream = read_blocks([line + "\n" for line in program], "p.nc", default_registry().dialect(dialect),
+                                    setup or _setup(machine), diagnostics, lanes=install_reading)
+            blocks = list(stream)
+        diagnostics.check()
     except ErrorList as err:
         return "errors:\n" + str(err)
-    return "\n".join(_shown(b) for b in blocks)
+    return "\n".join([_shown(b) for b in blocks] + [f"warning: {w}" for w in diagnostics.warnings])
 
 
 def _shown(block: Block) -> str:
@@ -133,6 +141,81 @@ def test_the_lane_reads_what_the_general_path_reads(program: list[str], dialect:
     with lanes(lambda syntax: None):
         slow = _read(program, dialect, machine)
     assert fast == slow
+
+
+@st.composite
+def cam_programs(draw: st.DrawFn) -> list[str]:
+    """A CAM program's moves, arcs and next holes whose axis and arc words are now and then point-less (least
+    input increments, or calculator input), in either unit system: the numbers the lane reads with the
+    general path's divisor, and the point-mix warning it tells in word order."""
+    out = [draw(st.sampled_from(["G21 G90", "G20 G90", "G21 G91"])), "G0 X0. Y0. Z5."]
+    for i in range(draw(st.integers(min_value=1, max_value=8))):
+        words = [f"N{10 * (i + 1)}"] if draw(st.booleans()) else []
+        code = draw(st.sampled_from(["", "", "G1", "G0", "G2", "G3", "G81 Z-2. R1. F50.", "G80"]))
+        if code:
+            words.append(code)
+        for letter in draw(st.lists(st.sampled_from("XYZ"), max_size=3, unique=True)):
+            words.append(letter + draw(number()))
+        if code in ("G2", "G3"):
+            for letter in draw(st.sampled_from(["IJ", "I", "J", "R"])):
+                words.append(letter + draw(number()))
+        if draw(st.integers(min_value=0, max_value=4)) == 0:
+            words.append(draw(st.sampled_from(["F300.", "X-0", "Y+12", "Z0012"])))
+        out.append(" ".join(words))
+    return [line for line in out if line]
+
+
+@settings(max_examples=150, deadline=None)
+@given(program=cam_programs(), system=st.sampled_from(["IS-A", "IS-B", "IS-C"]),
+       point=st.sampled_from(["least-increment", "least-increment", "calculator"]),
+       machine=st.sampled_from(["mill", "lathe"]))
+@example(program=["G21 G90", "G1 X1. Y2. F100.", "X1500 Y2.5", "G2 X0 Y1000 I-1000 J0"], system="IS-B",
+         point="least-increment", machine="mill")  # X mixed, warned at the block's X1500
+@example(program=["G21 G90", "G1 X1500 Y2500 F100.", "Y3. X4."], system="IS-C",
+         point="least-increment", machine="mill")  # two axes mixed in one block: word order says which warns
+@example(program=["G20 G90", "G81 X1. Y1. Z-0.1 R0.1 F5.", "X2000 Y3.", "X3. Y4000", "G80"], system="IS-A",
+         point="least-increment", machine="mill")  # next holes, inch
+def test_point_less_numbers_read_as_the_general_path_reads(program: list[str], system: str, point: str,
+                                                           machine: str) -> None:
+    setup = _setup(machine)
+    setup.input.increment_system = system  # type: ignore[assignment]
+    setup.input.decimal_point = point  # type: ignore[assignment]
+    fast = _read(program, "fanuc", machine, setup)
+    with lanes(lambda syntax: None):
+        slow = _read(program, "fanuc", machine, setup)
+    assert fast == slow
+
+
+def test_point_less_words_take_the_lane() -> None:
+    """A block with a point-less axis or arc word is read by the lane (the test above would pass with the lane
+    declining every such block), with the general path's values and the point-mix warning."""
+    taken: list[int] = []
+
+    class Counted(PlainLane):
+        __slots__ = ()
+
+        def read(self, block: Block, ctx: Any, words: Any) -> bool:
+            took = super().read(block, ctx, words)
+            if took:
+                taken.append(block.line)
+            return took
+
+    program = ["G21 G90 G17", "G1 X1. Y2. F100.", "N10 X1500 Y2.5", "G2 X0.5 Y3500 I-1000 J0", "G3 X1. Y0 R5000"]
+    with lanes(Counted):
+        shown = _read(program, "fanuc", "mill")
+    assert taken == [2, 3, 4, 5]
+    assert "('X', 1.5), ('Y', 2.5)" in shown and "('I', -1.0), ('J', 0.0)" in shown and "('R', 5.0)" in shown
+    assert "p.nc:3:5" in shown and "X1500 has no decimal point" in shown
+
+
+@given(num=st.one_of(st.integers(min_value=0, max_value=10 ** 20).map(str),
+                     st.from_regex(r"[+-]?[0-9]{1,20}", fullmatch=True)))
+@example(num="999999999999999999")  # 18 digits: summed
+@example(num="9999999999999999999")  # 19: by int
+@example(num="0010")
+def test_a_block_number_reads_as_int_reads_it(num: str) -> None:
+    """The lanes' block number (``whole_number``) is ``int``'s, summed for plain digits."""
+    assert whole_number(num) == int(num)
 
 
 def test_the_lane_is_chosen_where_the_base_reads() -> None:

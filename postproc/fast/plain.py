@@ -4,24 +4,30 @@ A speed-only copy of what ``WordBlockSyntax.build`` reads from such a block (``g
 ``finish_words``), kept apart from the classes dialects extend (STYLE.md 11). ``postproc.fast.reading``
 installs it for a run only where the block syntax class reads such a block with the family base's own
 methods, and ``tests/test_plain_blocks.py`` holds it to the general path on random programs. It answers
-False, leaving the block as it found it, at the first word it does not handle (another code, a point-less
-number, a repeated address) or for a block the general path refuses, so that path reads the block and
-reports its errors.
+False, leaving the block as it found it, at the first word it does not handle (another code, a repeated
+address, a number that is neither decimal nor plain digits) or for a block the general path refuses, so
+that path reads the block and reports its errors.
+
+A point-less axis or arc number (``X12500``: least input increments, the decimal-point rule) is read here
+too, as the general path reads it (``WordBlockSyntax.build``'s divisor, and the point-mix check told in word
+order): CAM posts write one now and then, and the general path cost such a block some 27,000 instructions
+where the lane takes 5,000 (callgrind, the benchmark's 1 block in 27).
 """
 
 from __future__ import annotations
 
 from typing import Final, cast
 
-from mypy_extensions import mypyc_attr
+from mypy_extensions import i64, mypyc_attr
 
 from ..context import BlockLane, Context
 from ..ir.expr import Expr
-from ..ir import Block, Feed, Motion, Sequence
+from ..ir import Block, Feed, Motion
 from ..numbers import decimal_value
 from ..rs274.block_syntax import AXIS_LETTERS, CENTER_AXIS, WordBlockSyntax
 from ..rs274.lathe_block_syntax import ONE_AXIS_WORDS, SINGLE_KEY
 from ..rs274.point_mix import point_mix
+from ..rs274.word_values import increments_divisor
 
 _UPPER: Final = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
 _UPPER[":"] = "O"  # ':' is ISO's spelling of the program number address (as ``WordBlockSyntax`` reads it)
@@ -47,11 +53,13 @@ class PlainLane(BlockLane):
     maybe F; under an active cycle, N and axis words only (the next hole of a row: ``Motion(None)``, the
     cycle resolve step reads the words)."""
 
-    __slots__ = ("syntax",)
+    __slots__ = ("syntax", "in_units")
 
     def __init__(self, syntax: WordBlockSyntax) -> None:
         self.syntax = syntax
         """The run's block syntax, whose code table says what G0-G3 mean."""
+        self.in_units = syntax.POINTLESS_IN_UNITS
+        """A point-less number is in program units (the dialect's declaration, read once)."""
 
     def read(self, block: Block, ctx: Context, words: list[tuple[str, str]]) -> bool:
         # The words' values are gathered apart (the axes in the motion's dictionary, the rest in locals) and
@@ -60,12 +68,12 @@ class PlainLane(BlockLane):
         # insertion per axis word; a block the lane leaves is left untouched.
         axes: dict[str, float | Expr] = {}
         others: dict[str, float | Expr] | None = None  # I/J/K/R and F, where the block has them (few do)
-        sequence_value: object = None  # N's value (the int the reader's ``Sequence`` holds, shared)
+        sequence_value: object = None  # N's value
         mode: str | None = None
         arc_words = False
         upper = block.canonical  # a canonical block's letters are upper-case already (numbers.CANONICAL_BLOCK)
-        sequence = block.sections.get("Sequence") if upper else None  # its first word's number, read
         seen = 0  # the addresses met, one bit per letter (a repeated one leaves the lane)
+        bare: dict[str, str] | None = None  # the point-less axis words, by letter (few blocks have one)
         cycle = ctx.state.cycle is not None
         for letter, num in words:
             up = letter if upper else _UPPER[letter]
@@ -77,10 +85,19 @@ class PlainLane(BlockLane):
                 break
             seen |= bit
             kind = LETTER_KIND[index]
-            if kind == LETTER_AXIS and (upper or "." in num):  # canonical: an axis number has its point
-                axes[up] = decimal_value(num)
+            if kind == LETTER_AXIS:
+                if upper or "." in num:  # canonical: an axis number has its point
+                    axes[up] = decimal_value(num)
+                else:
+                    value = self.pointless(ctx, num)
+                    if value is None:
+                        break
+                    axes[up] = value
+                    if bare is None:
+                        bare = {}
+                    bare[up] = num
             elif kind == LETTER_N and (upper or "." not in num):  # (a canonical N is digits only)
-                sequence_value = sequence.number if isinstance(sequence, Sequence) else int(num)
+                sequence_value = whole_number(num)
             elif cycle:
                 break  # a code, F or a cycle word under an active cycle: the general path
             elif kind == LETTER_F:
@@ -93,45 +110,88 @@ class PlainLane(BlockLane):
                 if entry is None or entry[1] != "motion" or entry[2] not in MOTION_MODES:
                     break
                 mode = str(entry[2])
-            elif kind == LETTER_ARC and (upper or "." in num):
+            elif kind == LETTER_ARC:
+                arc = decimal_value(num) if upper or "." in num else self.pointless(ctx, num)
+                if arc is None:
+                    break
                 if others is None:
                     others = {}
-                others[up] = decimal_value(num)
+                others[up] = arc
                 arc_words = True
             else:
                 break
         else:
-            values = values_of(axes, sequence_value, others)
             if cycle:
-                block.values = values
+                block.values = values_of(axes, sequence_value, others)
                 if axes:
                     block.sections["Motion"] = Motion(None, axes)
-                    _saw_pointed(ctx, axes, block.line)
+                    if bare is None:
+                        _saw_pointed(ctx, axes, block.line)
+                    else:
+                        _tell_point_mix(block, ctx, axes, bare, self.in_units)
                 return True
             if mode is None and axes:
                 mode = ctx.state.motion
                 if mode is None:
                     return False  # the general path explains the error
             if mode is not None:
-                motion = plain_motion(values, axes, mode, arc_words)
+                motion = plain_motion(others, axes, mode, arc_words)
                 if motion is None:
                     return False
-                block.values = values
+                block.values = values_of(axes, sequence_value, others)
                 block.sections["Motion"] = motion
                 if axes:
-                    _saw_pointed(ctx, axes, block.line)
+                    if bare is None:
+                        _saw_pointed(ctx, axes, block.line)
+                    else:
+                        _tell_point_mix(block, ctx, axes, bare, self.in_units)
             elif arc_words:
                 return False  # I/J/K/R with no motion: the general path refuses it
             else:
-                block.values = values
+                block.values = values_of(axes, sequence_value, others)
             if others is not None and "F" in others:
                 block.sections["Feed"] = Feed(others["F"])
             return True
         return False
 
+    def pointless(self, ctx: Context, num: str) -> float | None:
+        """A point-less number's value, as ``WordBlockSyntax.build`` reads it (least input increments of the
+        set-up's increment system in the units in force, or program units where the dialect says so); None for
+        anything but plain digits after an optional sign (the general path reads, or refuses, that)."""
+        size = len(num)
+        start = 1 if size > 0 and (num[0] == "-" or num[0] == "+") else 0
+        if start >= size:
+            return None
+        for i in range(start, size):
+            c = ord(num[i])
+            if c < 48 or c > 57:
+                return None
+        if self.in_units:
+            return float(int(num))
+        divisor = increments_divisor(ctx, ctx.state.units)
+        return int(num) / divisor if divisor else float(int(num))
+
+
+def whole_number(num: str) -> int:
+    """``int(num)`` of a block number's text: digits only (at most 18, an ``i64``'s) summed here, anything else by
+    ``int``. A CAM block's N costs a look-up of its ``Sequence`` less (~130 instructions) than reading the
+    number the reader parsed (and boxing it: a new int either way), or a fifth of ``int``'s parse."""
+    size: i64 = len(num)
+    if size == 0 or size > 18:
+        return int(num)
+    value: i64 = 0
+    i: i64 = 0
+    while i < size:
+        c: i64 = ord(num[i])
+        if c < 48 or c > 57:
+            return int(num)
+        value = value * 10 + (c - 48)
+        i += 1
+    return value
+
 
 def values_of(axes: dict[str, float | Expr], sequence: object, others: dict[str, float | Expr] | None
-            ) -> dict[str, float | int | Expr]:
+              ) -> dict[str, float | int | Expr]:
     """A plain block's ``Block.values``: its axis words', its block number's and its other words' (in that
     order: the general path's is the words', and no reader of ``values`` depends on it)."""
     values = cast("dict[str, object]", axes.copy())
@@ -162,15 +222,17 @@ class PlainLatheLane(PlainLane):
         return super().read(block, ctx, words)
 
 
-def plain_motion(values: dict[str, float | Expr], axes: dict[str, float | Expr], mode: str,
+def plain_motion(others: dict[str, float | Expr] | None, axes: dict[str, float | Expr], mode: str,
                  arc_words: bool) -> Motion | None:
     """The ``Motion`` of a plain block in ``mode`` with its axis words (``axes``) and its other words
-    (``values``): a straight move, or an arc by its centre I/J/K or its radius R; None where the general path
-    refuses the words (both forms of an arc, an arc without a centre, I/J/K/R beside a straight move), so
-    that it reports the error. Both lanes (``PlainLane``, ``plain_ngc.NgcPlainLane``) build their moves here."""
+    (``others``: I/J/K/R and F, or None where it has none): a straight move, or an arc by its centre I/J/K or its
+    radius R; None where the general path refuses the words (both forms of an arc, an arc without a centre,
+    I/J/K/R beside a straight move), so that it reports the error. Both lanes (``PlainLane``,
+    ``plain_ngc.NgcPlainLane``) build their moves here."""
     center: dict[str, float | Expr] | None = None
     radius: float | Expr | None = None
     if mode == "cw" or mode == "ccw":
+        values = others if others is not None else {}
         if "R" in values:
             if "I" in values or "J" in values or "K" in values:
                 return None  # both forms of an arc
@@ -182,6 +244,25 @@ def plain_motion(values: dict[str, float | Expr], axes: dict[str, float | Expr],
     elif arc_words:
         return None  # I/J/K/R beside a straight move
     return Motion(mode, axes, center, radius)
+
+
+def _tell_point_mix(block: Block, ctx: Context, axes: dict[str, float | Expr], bare: dict[str, str],
+                    in_units: bool) -> None:
+    """Tell the point-mix check (``postproc.rs274.point_mix``), while it still looks, of the axis words of a block
+    with point-less ones (``bare``), in word order, each with or without its decimal point, as the general path
+    tells it (which does only under least-increment input: ``point_mix`` is None otherwise, and where the dialect
+    reads point-less numbers in program units, ``in_units``)."""
+    if ctx.point_mix is None or in_units:
+        return
+    mix = point_mix(ctx)
+    if mix is not None:
+        units = ctx.state.units
+        for up, value in axes.items():
+            num = bare.get(up)
+            if num is None:
+                mix.saw_pointed(ctx, up, block.line)
+            else:
+                mix.saw_bare(ctx, block, up, num, cast(float, value), units)
 
 
 def _saw_pointed(ctx: Context, axes: dict[str, float | Expr], line: int) -> None:

@@ -23,10 +23,11 @@ from mypy_extensions import mypyc_attr
 from ..context import BlockLane, Context
 from ..ir.expr import Expr
 from ..ir import Block, Feed
+from ..numbers import decimal_value
 from ..rs274.codes import g_key
 from ..rs274.ngc_block_syntax import _STATE_KEY as NO_MOTION_KEY, NgcWordBlockSyntax
 from .plain import (LETTER_ARC, LETTER_AXIS, LETTER_F, LETTER_G, LETTER_KIND, LETTER_N, MOTION_MODES,
-                    plain_motion, values_of)
+                    plain_motion, values_of, whole_number)
 
 _UPPER: Final = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
 _FEED_MODES: Final = frozenset(("linear", "cw", "ccw"))
@@ -92,7 +93,7 @@ class NgcPlainLane(BlockLane):
             if kind == LETTER_N:
                 if "." in num or self.n_first and not (first and _starts_with_n(block.text or "")):
                     break  # a fractional N, or one the N-first rule looks at: the general path
-                sequence = int(num)
+                sequence = whole_number(num)
             elif kind == LETTER_G and mode is None:
                 found = self.motions.get(num)
                 if found is None:
@@ -105,15 +106,15 @@ class NgcPlainLane(BlockLane):
             elif up not in real:
                 break
             elif kind == LETTER_AXIS:
-                axes[up] = float(num)
+                axes[up] = decimal_value(num)  # (``float(num)``, the general path's reading, computed: postproc.numbers)
             elif kind == LETTER_F:
                 if others is None:
                     others = {}
-                others["F"] = float(num)
+                others["F"] = decimal_value(num)
             elif kind == LETTER_ARC:
                 if others is None:
                     others = {}
-                others[up] = float(num)
+                others[up] = decimal_value(num)
                 arc_words = True
             else:
                 break
@@ -128,17 +129,16 @@ class NgcPlainLane(BlockLane):
                 mode = state.motion
                 if mode is None:
                     return False  # the general path explains the error
-            values = values_of(axes, sequence, others)
             if mode is not None:
                 if mode in self.own_motion:
                     return False  # the dialect reads the block further itself (``after_sections``)
-                motion = plain_motion(values, axes, mode, arc_words)
+                motion = plain_motion(others, axes, mode, arc_words)
                 if motion is None:
                     return False
                 block.sections["Motion"] = motion
             elif arc_words:
                 return False  # I/J/K/R with no motion: the general path refuses it
-            block.values = values
+            block.values = values_of(axes, sequence, others)
             if others is not None and fed:
                 block.sections["Feed"] = Feed(others["F"])
             return True
