@@ -29,7 +29,8 @@ from postproc.fast.plain import PlainLane, PlainLatheLane, whole_number
 from postproc.fast.plain_ngc import NgcPlainLane
 from postproc.ir import Block
 from postproc.plugins import default_registry
-from postproc.reading import gc_paused, read_blocks
+from postproc.collector import gc_paused
+from postproc.reading import read_blocks
 from postproc.rs274.block_syntax import WordBlockSyntax
 from postproc.setup.machine_setup import MachineSetup
 
