@@ -95,6 +95,21 @@ def test_cycles_that_move_alike_stay_native(fanuc: str, expected: str) -> None:
     assert to_grblhal(fanuc) == expected
 
 
+def test_a_cancel_back_to_an_arc_mode_is_a_bare_g0() -> None:
+    """A cycle programmed under G2/G3 returns to that mode, but grblHAL refuses a bare G2 (no axis words,
+    error 26 [V: gcode.c, as grbl's]): the cancel is a bare G0, and the moves after it carry their own code
+    (found by make fuzz: a LinuxCNC full circle, G82, G80 written as a bare G2, exit 0). The G82 has no G98/G99:
+    LinuxCNC's own default level is written with it (it retracted to R in the source, to Z10 on grblHAL)."""
+    program = "G2 X0 Y0 I2 F100\nG82 X10 Y10 Z-2.5 R2 P0.5\nG80\nG0 X5\nM2\n"
+    text = to_grblhal(program, source="linuxcnc", head="G21 G0 X0 Y0 Z10\n")
+    lines = text.splitlines()
+    assert "G2" not in lines and lines[lines.index("G0 X5.") - 1] == "G0", text
+    assert "G99 G82 X10. Y10. Z-2.5 R2. P0.5" in lines, text
+    report = verify_lines(io.StringIO("G21 G0 X0 Y0 Z10\n" + program, newline=""), io.StringIO(OUT_HEAD + text),
+                          file_in="t.ngc", file_out="t.gcode", source="linuxcnc", target="grblhal")
+    assert report.ok, report.summary()
+
+
 def test_a_straight_move_of_the_fast_lane_ends_the_cycle_too() -> None:
     """A motion code ends a native cycle on grblHAL [V: ``gcode.c``]: a straight block the fast lane writes
     (``postproc.fast``, ``GrblhalWriter.after_block``) as a block the section dispatch writes, so the G80 after

@@ -97,6 +97,11 @@ class GrblhalWriter(GrblFamilyWriter):
         """The group-01 mode around the native cycle in force on the controller; None: none in force."""
         self.cycle_block: Block | None = None
         """The block whose cycle words set ``cycle_motion``, until ``after_block`` has seen it."""
+        self.return_in_force: str | None = None
+        """The return level (G98/G99) this program has written; None: none yet. A native cycle whose source set
+        its level by the source's own power-on default (LinuxCNC's, no G98/G99 in the program) has it written
+        (``canned_cycle_words``): grblHAL's default is not relied on (found by make fuzz: a LinuxCNC G82 without
+        G98/G99 retracted to R in the source and to the initial level on grblHAL, exit 0)."""
         self.subs: set[str] = set()
         """The numbered subs whose definition is written (a call finds only those on grblHAL)."""
         self.body: str | None = None
@@ -132,7 +137,10 @@ class GrblhalWriter(GrblFamilyWriter):
         motion = block.sections.get("Motion")
         if mode is None or (isinstance(motion, Motion) and motion.mode in GROUP_01):
             return []
-        return [self.code("motion", mode if mode in GROUP_01 else "rapid", "the motion mode after a cycle", block)]
+        # A bare G2/G3 is refused (no axis words, error 26 [V: grblHAL core gcode.c, as grbl's]): an arc mode
+        # is ended by a bare G0, which moves nothing; every later move is written with its own motion code.
+        back = mode if mode in GROUP_01 and mode not in ("cw", "ccw") else "rapid"
+        return [self.code("motion", back, "the motion mode after a cycle", block)]
 
     def expressions(self) -> bool:
         """The build runs parameters, expressions and o-words (``<Controller expressions="true">``)."""
@@ -254,7 +262,15 @@ class GrblhalWriter(GrblFamilyWriter):
                     words.append(letter + self.length(value, block, letter))
         order = {letter: at for at, letter in enumerate(WORD_ORDER)}
         head = words[:1] if s.call else []
-        return head + sorted(words[len(head):], key=lambda word: order.get(word[0], len(order)))
+        rest = sorted(words[len(head):], key=lambda word: order.get(word[0], len(order)))
+        if s.call and "ReturnLevel" not in block.sections and s.return_level != self.return_in_force:
+            self.return_in_force = s.return_level
+            head = [self.code("return", s.return_level, f"return to the {s.return_level} level", block), *head]
+        return head + rest
+
+    def return_level_words(self, s: Any, block: Block) -> list[str]:
+        self.return_in_force = s.level
+        return super().return_level_words(s, block)
 
 
 class GrblhalOwnWriter(GrblhalWriter):
