@@ -97,9 +97,11 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
     """A target written to has not the source's incremental addresses (LinuxCNC's U/W are axes): U/W become
     X/Z. (The simulator, which writes nothing, reads the source's own.)"""
     tracker = _Position(ctx, radius) if foreign or radius or absolute else None
-    turret = foreign or ctx.lathe_turret and not target.LATHE_TURRET
+    turret = ctx.lathe_turret and (foreign or not target.LATHE_TURRET)
     """A turret index becomes a tool change: not from a source that changes tools with M6 (LinuxCNC, grblHAL),
-    whose ``T1 M6`` applies no offset (its ``G43 H`` does, and is its own)."""
+    whose ``T1 M6`` applies no offset (its ``G43 H`` does, and is its own) and whose ``T1`` alone selects the next
+    tool without changing it, to a mill control too (was: ``T1`` written ``T1 M06`` for ISG, a change where the
+    source only prepared one, exit 0)."""
     offsets = LatheOffsets(ctx, radius) if foreign and ctx.lathe_turret else None
     """A turret index applies its offset (LinuxCNC's ``T1 M6`` applies none: its ``G43 H`` does)."""
     plane_set = not foreign
