@@ -22,7 +22,7 @@ from typing import Any
 import pytest
 
 from postproc.api import translate
-from postproc.errors import ErrorList, PostprocError
+from postproc.errors import Diagnostics, ErrorList, PostprocError
 from postproc.rs274.ngc_g7x import V2_9_0, V2_9_1, V2_9_4, NgcCycleError, arc_centre_by_radius, closes, cycle_moves, rules_of
 from postproc.rs274.ngc_g7x_segments import Arc, Chamfer, Fillet, Line, Piece
 from postproc.setup.machine_setup import ControllerSettings, InputSettings, MachineSetup
@@ -284,16 +284,23 @@ def test_a_repeat_in_a_profile_cuts_each_pass() -> None:
     assert [(k, pytest.approx(x), pytest.approx(z)) for k, x, z in moves[-5:]] == expected
 
 
-def test_a_control_statement_in_a_profile_kept_as_written_is_refused() -> None:
-    """A LinuxCNC program kept as written (to LinuxCNC) is not run, so no statement of its profile is: refused,
-    located at the cycle and naming the statement's line, not read past (a loop's moves taken once)."""
-    text = _statement_program(STATEMENTS[0])
-    with pytest.raises((PostprocError, ErrorList)) as err:
-        translate(io.StringIO(text), io.StringIO(), file="prog.ngc", source="linuxcnc", target="linuxcnc",
-                  setup=RADIUS)
-    assert "a control statement or parameter assignment in a profile of a program kept as written" in str(err.value)
-    assert "prog.ngc:11:" in str(err.value) and "profile, line 4" in str(err.value)
+def _copied(text: str) -> str:
+    out = io.StringIO()
+    translate(io.StringIO(text), out, file="prog.ngc", source="linuxcnc", target="linuxcnc", setup=RADIUS)
+    return out.getvalue()
 
+
+@pytest.mark.parametrize("statement", STATEMENTS)
+def test_a_control_statement_in_a_profile_of_a_copy_is_kept_as_written(statement: str) -> None:
+    """A LinuxCNC program copied to LinuxCNC is not run, so neither is its profile: its cycle, subprogram and all,
+    is kept as written (was: refused), and LinuxCNC runs the profile's statements where the cycle reads them, as
+    it would the source's. A copy of a program to its own controller is the program itself, byte for byte;
+    ``verify`` runs both and compares the cycle's moves."""
+    text = _statement_program(statement)
+    assert _copied(text) == text
+    report = verify_lines(io.StringIO(text), io.StringIO(text), file_in="in.ngc", file_out="out.ngc",
+                          source="linuxcnc", target="linuxcnc", setup=RADIUS)
+    assert report.ok and report.moves >= 4, report.summary()
 
 
 COMPUTED = [("#<_d>=1\n", "G1 X[2+#<_d>] Z-2", 3.0), ("#31=1\n", "G1 X[2+#31] Z-2", 3.0),
@@ -308,19 +315,40 @@ def _computed_program(before: str, line: str) -> str:
 
 
 @pytest.mark.parametrize("before, line, x", COMPUTED)
-def test_a_computed_profile_word_of_a_program_kept_as_written_is_refused_whatever_it_reads(
+def test_a_computed_profile_word_of_a_copy_is_kept_as_written_whatever_it_reads(
         before: str, line: str, x: float) -> None:
-    """A program kept as written (to LinuxCNC) is not run, so no parameter has a value where the cycle would read
-    the profile: every computed word is refused, global parameters' too, and the message says so (it named only a
-    local parameter or the G code, which misled for a global one); located at the cycle, naming the profile's line."""
+    """A program copied to LinuxCNC is not run, so no parameter has a value where the cycle would read the profile
+    here; LinuxCNC gives each its value where the cycle runs [V: rs274 below], so the cycle is kept as written
+    (was: refused, the copy of a LinuxCNC lathe program with a parametric profile, as LinuxCNC's own
+    ``nc_files/lathe_g7x_quadrants.ngc``, impossible). The copy is the program byte for byte, and rs274 cuts it
+    as the simulation of the source does."""
     text = _computed_program(before, line)
-    word = line.split()[0] if line.startswith("G[") else line.split()[1]
-    with pytest.raises((PostprocError, ErrorList)) as err:
-        translate(io.StringIO(text), io.StringIO(), file="prog.ngc", source="linuxcnc", target="linuxcnc",
-                  setup=RADIUS)
-    assert (f"G70's profile, line 4: {word}: a computed word in a G70-G72 profile of a program kept as written is "
-            "not modelled") in str(err.value)
-    assert f"prog.ngc:{8 + before.count(chr(10))}:" in str(err.value)
+    written = _copied(text)
+    assert written == text
+    if available():
+        assert difference(simulated(text), rs274_moves(written)) is None
+
+
+def test_after_a_cycle_kept_as_written_the_tool_is_where_the_program_says_next() -> None:
+    """The kept cycle's moves are not known to the copy, nor where it leaves the tool: the next absolute move
+    places it again, and the copy goes on (the blocks after the cycle are copied as written too)."""
+    text = _computed_program("#<_d>=1\n", "G1 X[2+#<_d>] Z-2").replace("M2\n", "G1 X8 Z0\nG91 G1 X1\nG90\nM2\n")
+    assert _copied(text) == text
+
+
+def test_a_copy_that_runs_the_program_writes_the_cycles_moves() -> None:
+    """``_kept_as_written`` serves a plain copy alone: a copy that rewrites the program (``--units``) runs it,
+    so the profile is run and its computed word takes its value (X3, hand-derived: ``#31`` is 1 where the cycle
+    reads it); the simulation of that output cuts what the source's does."""
+    text = _computed_program("#31=1\n", "G1 X[2+#31] Z-2")
+    out = io.StringIO()
+    translate(io.StringIO(text), out, file="prog.ngc", source="linuxcnc", target="linuxcnc", setup=RADIUS,
+              units="mm", diagnostics=Diagnostics(warn_stream=io.StringIO()))
+    written = out.getvalue()
+    assert "#31" not in written
+    moves = [(m["move"], float(m["x"]), float(m["z"])) for m in simulated(written)]
+    assert [(k, pytest.approx(mx), pytest.approx(mz)) for k, mx, mz in moves[-3:]] == [
+        ("rapid", 1.0, 0.0), ("feed", 3.0, -2.0), ("feed", 6.0, -4.0)], written
 
 
 @pytest.mark.parametrize("before, line, x", COMPUTED)

@@ -17,9 +17,11 @@ than ZX, I not above 0, G71/G72 under cutter compensation, a profile arc given b
 both, a profile not monotonic. Where the program runs (``RUN_INTERPRETER_KEY``), the profile is run as LinuxCNC
 runs it, as a call from the cycle through its o-word loops, branches, calls and parameter assignments, its words
 evaluated with the parameters' values then (``_run_profile``; a read of the current position reads the profile's own
-point). In a program kept as written (not run), its words alone are read (``_kept_words``). Not modelled, so
-refused (``UnsupportedError``): in a program kept as written, any computed word in a profile (what it reads has no
-value without the program's run) and a control statement or parameter assignment in a
+point); there the cycle's line is written as its moves (the flattened program has no subprograms). In a program
+kept as written (not run), its words alone are read (``_kept_words``). A plain copy to LinuxCNC keeps a cycle whose
+profile computes as written, its moves unknown here (``_kept_as_written``). Not modelled, so refused
+(``UnsupportedError``): in a program kept as written for another purpose, any computed word in a profile (what it
+reads has no value without the program's run) and a control statement or parameter assignment in a
 profile (read past before issue 26: a loop's moves were taken once); a profile with any word but those (a feed or
 speed is ignored there: said rather than dropped), a subprogram not
 defined before the cycle, the cycle in incremental mode (G91), a P of G70 that is no whole number from 1,
@@ -224,8 +226,6 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     axes = {axis: float(v) for axis, v in motion.axes.items() if not isinstance(v, Expr)}  # (refused above)
     x = axes["X"] / scale if "X" in axes else x0
     z = axes.get("Z", z0)
-    if x is None or z is None:
-        raise refuse(f"{name}: the tool's position before the cycle is unknown (give the cycle X and Z)")
     if code != "70" and words.get("I", 1.0) <= 0:
         raise refuse(f"{name} I{words['I']:g}: the cut's depth must be above 0 (rs274: \"I must be greater "
                      "than zero\")", "I")
@@ -238,10 +238,15 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     written = ctx.run_data.get(PROFILES_KEY, {}).get(label)
     if written is None:
         raise unmodelled(f"{name} Q{label}: no subprogram o{label} is defined before the cycle", "Q")
+    running = ctx.run_data.get(RUN_INTERPRETER_KEY)
+    if running is None and ctx.program_mode == "keep" and _computes(written):
+        _kept_as_written(block, ctx, name, words, used)
+        return
+    if x is None or z is None:
+        raise refuse(f"{name}: the tool's position before the cycle is unknown (give the cycle X and Z)")
     start = complex(float(z), float(x))
     at = ctx.at(block, ctx.column_of(block, "Q"))
     point = {"X": start.imag, "Z": start.real}
-    running = ctx.run_data.get(RUN_INTERPRETER_KEY)
     run = None if running is None else _run_profile(running, label, block, ctx, name, at, point)
     try:
         pieces = _profile(iter(written) if run is None else run, start, ctx, name, at, scale, point)
@@ -263,9 +268,41 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
                              None if centre is None else centre.imag, None if centre is None else centre.real))
     origin = (float(x0) if x0 is not None else float(x), float(z0) if z0 is not None else float(z))
     place_thread_moves(block, ctx, turn, origin, words, used, refuse, name)
+    if running is not None:  # the program runs: flattened, its subprograms are not written, so neither is the line
+        block.changed()  # that names one (was: a --units copy wrote `G70 Q100` without its o100, exit 0)
     last = turn[-1]
     state.position["X"] = last.x * scale
     state.position["Z"] = last.z
+
+
+KEPT_CYCLE: Final = "a G70-G72 cycle whose profile computes, kept as written (its moves are known where it runs)"
+"""What the ``NativeCode`` of such a cycle says (``_kept_as_written``)."""
+
+
+def _computes(written: list[Written]) -> bool:
+    """The profile has a computed word or a control statement or parameter assignment (``_kept_words``)."""
+    from postproc.interp.run_state import is_number  # (the interpreter's modules: a profile's cost only)
+
+    return any(words and words[0][0] == STATEMENT
+               or any(isinstance(values.get(letter.upper()), Expr) and not is_number(text) for letter, text in words)
+               for _, words, values in written)
+
+
+def _kept_as_written(block: Block, ctx: Context, name: str, words: dict[str, float], used: set[str]) -> None:
+    """A cycle whose profile computes, in a LinuxCNC program copied as written (``program_mode`` 'keep': the
+    target is LinuxCNC itself, nothing is flattened and nothing is run, ``postproc.api``): its line goes out as
+    written (``NativeCode``), the profile's subprogram with it, and LinuxCNC evaluates the profile where the cycle
+    runs, as it would have in the source [V: ``interp_g7x.cc`` reads ``O<q> CALL`` when the cycle runs]. Its moves
+    are not known here, so neither is where the tool ends: X and Z are unknown after it, and a later step that
+    needs them refuses with its own located error. ``verify`` and ``toolpath`` run the program
+    (``program_mode`` 'execute'), so they read the cycle's moves (``_run_profile``). Another target, or a copy
+    with ``--units``/``--transform`` (mode 'auto'), needs the moves: the refusal (``_kept_words``) stands, and a
+    program that computes is then flattened (``postproc.api._keep_check``)."""
+    block.add(NativeCode(ctx.dialect, f"{name} ({KEPT_CYCLE})", block.text or ""))
+    used.update(words)
+    state = ctx.state
+    state.position["X"] = None
+    state.position["Z"] = None
 
 
 def _check_closed(pieces: list[Piece], x: float, z: float, code: str, name: str, unmodelled: Any) -> None:
