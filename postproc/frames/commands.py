@@ -122,8 +122,8 @@ def rotate(ev: Evaluation, frame: Frame, change: FrameChange, words: dict[str, f
     if frame.rotation is not None:
         raise ProgramError(f"{change.describe()} while coordinate rotation is already on (cancel it first)")
     if "R" not in words:
-        raise ProgramError(f"{change.describe()} without R takes its angle from parameter 5410, not known "
-                           "here: program R")
+        source = change.omitted or "the controller's settings"  # (the family's words: ``FrameChange.omitted``)
+        raise ProgramError(f"{change.describe()} without R takes its angle from {source}, not known here: program R")
     a1, a2, _ = PLANE_AXES[plane]
     if ev.modal.distance == "incremental" and (a1 in words or a2 in words):
         raise ProgramError(f"{change.describe()} in incremental mode is not simulated (whether its centre words "

@@ -5,7 +5,9 @@ words are those the command takes, by letter, in program units (an angle in degr
 is an offset, a centre or a mirror line on that axis; ``R`` an angle; ``P`` a common scale factor and
 ``I J K`` per-axis factors. ``rules`` names the rule set the command follows ('layered', 'shared_offset', 'rotate_first' or 'chain',
 named after what they do, see ``postproc.frames.frame``; each dialect's reading names its controller's). ``family`` and ``text`` keep the command as written, for a target of the same
-family that runs it natively (``postproc.frames.lowering``).
+family that runs it natively (``postproc.frames.lowering``). ``omitted`` says, in the family's words, where the
+controller takes a value the command leaves out (Fanuc: a G68 without R, its angle from a parameter), for the
+error that the simulation, which does not know it, gives (empty: nothing to say).
 
 Kinds (what each does is in ``postproc.frames.frame``):
 - ``local``: a local offset (Fanuc G52; LinuxCNC G52, which shares G92's offset);
@@ -55,9 +57,10 @@ class FrameChange(Section):
     """One frame command (see the module docstring)."""
 
     XNAME = KEY = "FrameChange"
-    __slots__ = ("kind", "words", "rules", "family", "text")
+    __slots__ = ("kind", "words", "rules", "family", "text", "omitted")
 
-    def __init__(self, kind: str, words: dict[str, float | Expr], rules: str, family: str, text: str) -> None:
+    def __init__(self, kind: str, words: dict[str, float | Expr], rules: str, family: str, text: str,
+                 omitted: str = "") -> None:
         if kind not in KINDS:
             raise ValueError(f"unknown frame change {kind!r}")
         if rules not in RULES:
@@ -67,6 +70,7 @@ class FrameChange(Section):
         self.rules = rules
         self.family = family
         self.text = text
+        self.omitted = omitted
 
     def describe(self) -> str:
         return f"{self.text} ({self.kind.replace('_', ' ')})"
@@ -84,11 +88,14 @@ class FrameChange(Section):
                         raise ValueError(f"unexpected <{value.tag}>")
             elif isinstance(child.tag, str):
                 raise ValueError(f"unexpected <{child.tag}>")
-        return cls(el.get("kind", ""), words, el.get("rules", ""), el.get("family", ""), el.get("text", ""))
+        return cls(el.get("kind", ""), words, el.get("rules", ""), el.get("family", ""), el.get("text", ""),
+                   el.get("omitted", ""))
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
         etree = lxml_etree()
         el = etree.Element(self.XNAME, kind=self.kind, rules=self.rules, family=self.family, text=self.text)
+        if self.omitted:
+            el.set("omitted", self.omitted)
         child = etree.SubElement(el, "Words")
         for k, v in self.words.items():
             if isinstance(v, Expr):
@@ -98,10 +105,12 @@ class FrameChange(Section):
         return el
 
     def _key(self) -> tuple[Any, ...]:
-        return (self.kind, tuple(sorted(self.words.items(), key=lambda kv: kv[0])), self.rules, self.family, self.text)
+        return (self.kind, tuple(sorted(self.words.items(), key=lambda kv: kv[0])), self.rules, self.family, self.text,
+                self.omitted)
 
     def __repr__(self) -> str:
-        return f"FrameChange({self.kind!r}, {self.words!r}, {self.rules!r}, {self.family!r}, {self.text!r})"
+        omitted = f", {self.omitted!r}" if self.omitted else ""
+        return f"FrameChange({self.kind!r}, {self.words!r}, {self.rules!r}, {self.family!r}, {self.text!r}{omitted})"
 
 
 def register_frames(factory: XFactory) -> None:

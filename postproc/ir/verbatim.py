@@ -81,13 +81,17 @@ V: rs274 run here, tests/test_work_offset_variables.py]. Set for a system that i
 
 @mypyc_attr(allow_interpreted_subclasses=True)
 class DataSetting(Section):
-    """Programmable data input (Fanuc ``G10 L2 P1 X.. Y..``): write ``values`` (axis letter or 'R' ->
-    value in program units) into entry ``index`` of a controller table. ``table`` is neutral:
-    'work_offset' (index 1 = the first work system, 0 = the offset common to all), 'work_offset_stored'
-    (``STORED_WORK_OFFSET``), 'work_offset_extended',
-    'tool_length', 'tool_length_wear', 'cutter_offset', 'cutter_offset_wear'. ``incremental``: the values
-    are added to the entry. ``text`` is the block's setting as written, passed verbatim within ``family``.
-    A value may be an expression (``X[#1+1]``, a program kept symbolically); the table and the entry are
+    """Programmable data input (``G10 L2 P1 X.. Y..`` of the RS274 family): write ``values`` (key -> value in
+    program units) into entry ``index`` of a controller table. ``table`` is neutral: 'work_offset' (index 1 = the
+    first work system, 0 = the offset common to all), 'work_offset_stored' (``STORED_WORK_OFFSET``),
+    'work_offset_extended', 'tool_length', 'tool_length_wear', 'cutter_offset', 'cutter_offset_wear', a whole tool
+    table entry by tool number 'tool_entry' (and 'tool_entry_at_point', 'tool_entry_at_point_9': the entry set so
+    that the current point reads the values, in the current work system or the ninth), a lathe tool offset's
+    'lathe_offset' and 'lathe_offset_wear' (``postproc.compensation.tool_table``). The keys are axis letters or 'R'
+    (the radius), except a lathe offset's, which are keyed by meaning, not by a family's letters (``LATHE_VALUES``:
+    'x', 'x_increment', 'z', 'z_increment', 'radius', 'radius_increment'; ``LATHE_TIP``: 'tip'). ``incremental``:
+    the values are added to the entry. ``text`` is the block's setting as written, passed verbatim within
+    ``family``. A value may be an expression (``X[#1+1]``, a program kept symbolically); the table and the entry are
     numbers (a computed ``L`` or ``P`` keeps the block verbatim)."""
 
     XNAME = "DataSetting"

@@ -26,6 +26,10 @@ AXIS_WORDS: Final = frozenset(AXES)
 _NO_WORDS: Final = frozenset(("origin_clear", "origin_suspend", "origin_restore", "rotate_off", "scale_off", "polar",
                               "polar_off"))
 _PER_THOUSAND: Final = 0.001
+NO_ANGLE: Final = "parameter 5410"
+"""Where a G68 without R takes its angle under Fanuc's rules (``LAYERED``) [K: Fanuc operator's manuals, coordinate
+system rotation: an omitted R is the angle set in parameter 5410]: the simulation, which does not know it, names it
+in its error (``FrameChange.omitted``, ``postproc.frames.commands``)."""
 
 
 def read_frame(block: Block, ctx: Context, kind: str, code: str, values: dict[str, Any], used: set[str],
@@ -36,6 +40,7 @@ def read_frame(block: Block, ctx: Context, kind: str, code: str, values: dict[st
     if ctx.state.cycle is not None:
         raise ProgramError(f"{code} while a canned cycle is active is not read [?]: cancel the cycle first", at)
     words: dict[str, float | Expr] = {}
+    omitted = ""
     if kind in _NO_WORDS:
         pass
     elif kind in ("local", "origin", "mirror", "mirror_off"):
@@ -51,6 +56,8 @@ def read_frame(block: Block, ctx: Context, kind: str, code: str, values: dict[st
             raise ProgramError(f"{code} takes the centre on the plane's two axes: {third} belongs in the next block", at)
         if "R" in values:
             words["R"] = _angle(block, values["R"], rules)
+        elif rules == LAYERED:
+            omitted = NO_ANGLE
     elif kind == "scale":
         words = {k: v for k, v in values.items() if k in "XYZ"}
         for letter in "PIJK":
@@ -65,7 +72,7 @@ def read_frame(block: Block, ctx: Context, kind: str, code: str, values: dict[st
         used.add(letter)
     text = " ".join(letter + number for letter, number in block.words
                     if letter.upper() in words or (letter.upper() == "G" and f"G{number}" == code))
-    return FrameChange(kind, words, rules, family, text)
+    return FrameChange(kind, words, rules, family, text, omitted)
 
 
 def _angle(block: Block, value: Any, rules: str) -> float | Expr:

@@ -525,7 +525,7 @@ def _is_straight(item: Motion) -> bool:
 def _left_out(item: Motion, before: dict[str, float | Expr]) -> Motion:
     """A straight move of an expansion without the axes whose number is the one the tool stands at
     (``before``: the move written just before it); written absolute, those words would not move it.
-    ``_straight_item_line`` leaves out the same axes."""
+    The expansion-move lane (``postproc.fast.expansion_moves``) leaves out the same axes."""
     if not _is_straight(item):
         return item
     axes: dict[str, float | Expr] = {}

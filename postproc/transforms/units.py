@@ -165,7 +165,8 @@ class UnitConverter:
             changed = {a: _times(v, k) for a, v in section.words.items() if a in LINEAR
                        and not (isinstance(v, float) and v == 0.0)}
             words = {**section.words, **changed}
-            return FrameChange(section.kind, words, section.rules, section.family, respell(section.text, changed))
+            return FrameChange(section.kind, words, section.rules, section.family, respell(section.text, changed),
+                               section.omitted)
         if isinstance(section, RigidTap):
             return RigidTap(_lengths(section.axes, k), _times(section.pitch, k), section.dwell, section.speedup)
         if type(section).__name__ in INERT:
