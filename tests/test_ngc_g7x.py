@@ -556,6 +556,22 @@ def test_linuxcnc_keeps_its_cycles_byte_for_byte() -> None:
     assert out.getvalue() == text
 
 
+def test_normalize_keeps_the_cycles_words() -> None:
+    """``--normalize`` rewrites each line from its words: a G70-G72's D (read apart, as a distance) was left out
+    (``G71 .. D1`` became ``G71 ..``, another cut, exit 0). Its words now all stay, spelt with their points; rs274
+    cuts the normalized demo as it cuts the demo itself."""
+    text = _demo_plain()
+    setup = MachineSetup(input=InputSettings(machine_type="lathe", x_programming="radius"))
+    setup.output.normalize = True
+    out = io.StringIO()
+    translate(io.StringIO(text), out, file="demo.ngc", source="linuxcnc", target="linuxcnc", setup=setup)
+    cycles = [line for line in text.splitlines() if re.match(r"G7[012]\b", line)]
+    written = [line for line in out.getvalue().splitlines() if re.match(r"G7[012]\b", line)]
+    assert cycles and [re.findall("[A-Z]", line) for line in written] == [re.findall("[A-Z]", line) for line in cycles]
+    if available():
+        assert difference(rs274_moves(out.getvalue()), rs274_moves(text)) is None
+
+
 @pytest.mark.parametrize("target", ["fanuc", "gsk", "grblhal"])
 def test_cycles_expanded_for_other_controllers_verify(target: str) -> None:
     """Fanuc T, GSK and grblHAL get the cycles' moves (LinuxCNC's algorithm is none of theirs: see

@@ -184,9 +184,11 @@ _D_KEY = "ngc.g7x_d"
 """``ctx.state.extra`` key: the D of the block's G70-G72, read as a real (``_real_d``)."""
 
 
-def _real_d(block: Block, ctx: Context) -> None:
+def _real_d(block: Block, ctx: Context) -> list[tuple[str, str]] | None:
     """D in a G70-G72 block is a distance (a real, rs274 ``read_d``), not the whole tool number the family
-    reads elsewhere: it is taken out of the words and read here."""
+    reads elsewhere: it is taken out of the words and read here. Returns the words as written (None: no D), which
+    the block gets back once read: a writer that rewrites the block from its words (``--normalize``) wrote the
+    cycle without its D (was: ``G71 .. D1`` normalized to ``G71 ..``, another cut, exit 0)."""
     ctx.state.extra.pop(_D_KEY, None)
     for index, (letter, num) in enumerate(block.words):
         if letter in "Dd" and not (block.values and "D" in block.values):
@@ -194,8 +196,10 @@ def _real_d(block: Block, ctx: Context) -> None:
                 ctx.state.extra[_D_KEY] = float(num)
             except ValueError:
                 raise ProgramError(f"D{num} is not a number", ctx.at(block, ctx.column_of(block, "D"))) from None
-            block.words = block.words[:index] + block.words[index + 1:]
-            return
+            words = block.words
+            block.words = words[:index] + words[index + 1:]
+            return words
+    return None
 
 
 class NgcLatheBlockSyntax(NgcBlockSyntax):
@@ -219,11 +223,15 @@ class NgcLatheBlockSyntax(NgcBlockSyntax):
                     raise ProgramError(f"G{num} while the program writes X in the mode other than the set-up's "
                                        "(G7/G8): a G70-G72 cycle is read only in the set-up's mode",
                                        ctx.at(block, ctx.column_of(block, "G", num)))
-                _real_d(block, ctx)
+                with_d = _real_d(block, ctx)
                 break
+        else:
+            with_d = None
         super().build(block, ctx)
         if written is not None:
             block.words = written  # the words as written; their values the set-up's mode
+        elif with_d is not None:
+            block.words = with_d  # the cycle's D back among its words, read (``_real_d``)
         follow_compensation(block, ctx)
 
 
