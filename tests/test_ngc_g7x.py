@@ -329,6 +329,23 @@ def test_a_computed_profile_word_of_a_copy_is_kept_as_written_whatever_it_reads(
         assert difference(simulated(text), rs274_moves(written)) is None
 
 
+def test_linuxcncs_quadrants_with_computed_cycle_words_copy_byte_for_byte() -> None:
+    """LinuxCNC's own ``nc_files/lathe_g7x_quadrants.ngc`` computes its later cycles' Z (``Z[-14+#<_distance>]``
+    after ``#<_distance>=[#<_distance>+12]``): its copy to LinuxCNC was refused ("a computed word in G72 is not
+    supported"); the copy is now the program itself, and ``verify`` (which runs both) passes."""
+    from postproc.setup.machine_setup import load_setup
+
+    path = ROOT / "tests" / "heldout" / "linuxcnc" / "lathe_g7x_quadrants.ngc"
+    setup = load_setup(str(ROOT / "tests" / "heldout" / "setups" / "linuxcnc_lathe_radius.xml"))
+    text = path.read_text()
+    out = io.StringIO()
+    translate(io.StringIO(text), out, file=path.name, source="linuxcnc", target="linuxcnc", setup=setup)
+    assert out.getvalue() == text
+    report = verify_lines(io.StringIO(text), io.StringIO(text), file_in="in.ngc", file_out="out.ngc",
+                          source="linuxcnc", target="linuxcnc", setup=setup)
+    assert report.ok and report.moves > 100, report.summary()
+
+
 def test_after_a_cycle_kept_as_written_the_tool_is_where_the_program_says_next() -> None:
     """The kept cycle's moves are not known to the copy, nor where it leaves the tool: the next absolute move
     places it again, and the copy goes on (the blocks after the cycle are copied as written too)."""

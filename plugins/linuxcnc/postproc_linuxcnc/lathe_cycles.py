@@ -18,8 +18,8 @@ both, a profile not monotonic. Where the program runs (``RUN_INTERPRETER_KEY``),
 runs it, as a call from the cycle through its o-word loops, branches, calls and parameter assignments, its words
 evaluated with the parameters' values then (``_run_profile``; a read of the current position reads the profile's own
 point); there the cycle's line is written as its moves (the flattened program has no subprograms). In a program
-kept as written (not run), its words alone are read (``_kept_words``). A plain copy to LinuxCNC keeps a cycle whose
-profile computes as written, its moves unknown here (``_kept_as_written``). Not modelled, so refused
+kept as written (not run), its words alone are read (``_kept_words``). A plain copy to LinuxCNC keeps a cycle with a
+computed word or whose profile computes as written, its moves unknown here (``_kept_as_written``). Not modelled, so refused
 (``UnsupportedError``): in a program kept as written for another purpose, any computed word in a profile (what it
 reads has no value without the program's run) and a control statement or parameter assignment in a
 profile (read past before issue 26: a loop's moves were taken once); a profile with any word but those (a feed or
@@ -186,10 +186,14 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     extra = sorted(letter for letter in "UW" if letter in values)
     if extra:
         raise unmodelled(f"{extra[0]} in {name}: the cycle takes X and Z (U and W belong in its profile)", extra[0])
-    if any(isinstance(v, Expr) for v in [*given.values(), *motion.axes.values()]):
+    running = ctx.run_data.get(RUN_INTERPRETER_KEY)
+    copied = running is None and ctx.program_mode == "keep"
+    """A plain copy to LinuxCNC: a cycle whose moves are not known here is kept as written (``_kept_as_written``)."""
+    computed = any(isinstance(v, Expr) for v in [*given.values(), *motion.axes.values()])
+    if computed and not copied:
         raise unmodelled(f"a computed word in {name} is not supported (write the numbers)")
-    words = {letter: float(v) for letter, v in given.items()}
-    if "Q" not in words:
+    words = {letter: float(v) for letter, v in given.items() if not isinstance(v, Expr)}
+    if "Q" not in given:
         raise refuse(f"{name} needs Q, the subprogram of its profile (rs274: \"G7x.x requires a Q word\")")
     if _compensating(block, ctx):
         if code != "70":  # rs274 names the cycle with its sub-cycle, ".0" included [V: interp_g7x.cc "G%d.%d"]
@@ -218,6 +222,9 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
         incremental = distance.mode == "incremental"  # type: ignore[attr-defined]
     if incremental:
         raise unmodelled(f"{name} in incremental mode (G91) is not modelled (program it in G90)")
+    if computed:
+        _kept_as_written(block, ctx, name, given, used)
+        return
     scale = 2.0 if ctx.diameter else 1.0
     """In diameter mode (G7) X and U are diameters, everything else radial [V: rs274 2.9.0~pre1 run here: a
     profile and cycle X doubled under G7 make the moves of G8; I, K, R, D, E and the depth I unchanged]."""
@@ -238,8 +245,7 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     written = ctx.run_data.get(PROFILES_KEY, {}).get(label)
     if written is None:
         raise unmodelled(f"{name} Q{label}: no subprogram o{label} is defined before the cycle", "Q")
-    running = ctx.run_data.get(RUN_INTERPRETER_KEY)
-    if running is None and ctx.program_mode == "keep" and _computes(written):
+    if copied and _computes(written):
         _kept_as_written(block, ctx, name, words, used)
         return
     if x is None or z is None:
@@ -275,7 +281,7 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     state.position["Z"] = last.z
 
 
-KEPT_CYCLE: Final = "a G70-G72 cycle whose profile computes, kept as written (its moves are known where it runs)"
+KEPT_CYCLE: Final = "a G70-G72 cycle that computes, kept as written (its moves are known where it runs)"
 """What the ``NativeCode`` of such a cycle says (``_kept_as_written``)."""
 
 
@@ -288,8 +294,8 @@ def _computes(written: list[Written]) -> bool:
                for _, words, values in written)
 
 
-def _kept_as_written(block: Block, ctx: Context, name: str, words: dict[str, float], used: set[str]) -> None:
-    """A cycle whose profile computes, in a LinuxCNC program copied as written (``program_mode`` 'keep': the
+def _kept_as_written(block: Block, ctx: Context, name: str, words: dict[str, Any], used: set[str]) -> None:
+    """A cycle with a computed word or whose profile computes, in a LinuxCNC program copied as written (``program_mode`` 'keep': the
     target is LinuxCNC itself, nothing is flattened and nothing is run, ``postproc.api``): its line goes out as
     written (``NativeCode``), the profile's subprogram with it, and LinuxCNC evaluates the profile where the cycle
     runs, as it would have in the source [V: ``interp_g7x.cc`` reads ``O<q> CALL`` when the cycle runs]. Its moves
