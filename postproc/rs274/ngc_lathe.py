@@ -36,6 +36,7 @@ from typing import Any
 
 from postproc.context import Context
 from postproc.errors import ProgramError
+from postproc.interp.variables import RUN_INTERPRETER_KEY
 from postproc.ir.expr import Expr
 from postproc.ir import Block, Motion
 from postproc.ir.lathe_sections import SpindleClamp, SpindleMode, ThreadLead, XProgramming
@@ -190,6 +191,8 @@ def read_thread(block: Block, ctx: Context, motion: Motion, values: dict[str, An
                            ctx.at(block, col))
     used.add("K")
     if isinstance(along, Expr) or any(isinstance(v, Expr) for v in motion.axes.values()):
+        if ctx.program_mode == "keep" and RUN_INTERPRETER_KEY not in ctx.run_data:
+            return  # a plain copy to the dialect itself: the line goes as written, its lead known where it runs
         raise ProgramError(f"a computed word in {name} is not supported (write the numbers)", ctx.at(block, col))
     if along <= 0:
         raise ProgramError(f"{name} K{along:g}: the distance per revolution must be positive",
