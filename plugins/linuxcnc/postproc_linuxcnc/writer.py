@@ -406,6 +406,11 @@ class LinuxcncWriter(WordWriter):
                     and not self._ended:
                 return self._lone_tape_mark(block)
             self._closed = self.opening is True  # a '%' after the opening one
+        if self.normalize and block.text is not None and not block.words and "ProgramStart" in sections:
+            # A Fanuc-style program number (``O1``, the start of an ``M98`` subprogram) is read into its section
+            # with no words, from which a normalized line is written: it was written as a comment ("nothing in
+            # this block has a meaning"), so the ``M98 P1`` before it found no subprogram, exit 0. As read.
+            return block.text.strip() + (block.eol or "\n")
         text = super().structure_block(block)
         end = sections.get("ProgramControl")
         if end is not None and end.kind in ("end", "end_rewind"):  # type: ignore[attr-defined]
