@@ -388,6 +388,17 @@ class LinuxcncWriter(WordWriter):
         self._feeds = LineFeeds(out)
         super().write(blocks, cast(TextIO, self._feeds))
 
+    def normalized(self, block: Block) -> str:
+        """A line with polar coordinates (``@``, ``^``) is written as read: its words were replaced by the X and
+        Y of the point they reach from where the tool stood when the line was read (``polar``), which is that
+        point only where the line runs once from there; in a loop each pass turns further (LinuxCNC's own
+        ``spiral.ngc``, ``o100 repeat [800]`` of ``G91 G1 @-.0025 ^4.5``, was normalized to one fixed step, a
+        straight line, exit 0). Under ``--renumber`` the line is renumbered as before (words rewritten)."""
+        text = block.text
+        if text is not None and ("@" in text or "^" in text) and not self.renumber:
+            return text.strip()
+        return super().normalized(block)
+
     def structure_block(self, block: Block) -> str | None:
         sections = block.sections
         if self._body is not None and ("TapeMark" in sections or "ProgramStart" in sections):
