@@ -2,7 +2,8 @@
 the ``O1`` line is read into the program start with no words, and the normalized line written from its words was
 nothing: it became a comment ("nothing in this block has a meaning in linuxcnc"), so the output's ``M98 P1`` found no
 subprogram (rs274 refuses it), exit 0 with a warning. It is written as read now; rs274 runs the normalized program
-as it runs the source [V: rs274 below], so the expected moves are the interpreter's, not the tool's.
+as it runs the source [V: rs274 below], so the expected moves are the interpreter's, not the tool's. With polar
+coordinates in a loop (``spiral.ngc``): see the last test.
 """
 
 from __future__ import annotations
