@@ -110,8 +110,8 @@ def problems(target: str, text: str, setup: MachineSetup, source: str | None = N
     return found
 
 
-def _check(target: str, text: str, setup: MachineSetup) -> None:
-    found = problems(target, text, setup)
+def _check(target: str, text: str, setup: MachineSetup, source: str) -> None:
+    found = problems(target, text, setup, source=source)  # (a GSK program's grblHAL output runs in lathe mode)
     if found:
         listing = "\n".join(f"{n:4} | {line}" for n, line in enumerate(text.splitlines(), 1))
         violations.append(f"{target} output its controller refuses:\n  " + "\n  ".join(found)
@@ -139,7 +139,7 @@ def _wrap(cls: type[Any]) -> None:
         target = self.target.NAME if self.target is not None else self.DIALECT
         if (target in CHECKERS and self.source_dialect != target and not self._failed()
                 and not self.ctx.run_data.get("dry_run")):  # (a translation's trial of keeping a program symbolic)
-            _check(target, "".join(tee.parts), self.ctx.setup)
+            _check(target, "".join(tee.parts), self.ctx.setup, self.source_dialect)
 
     write.checks_output_rules = True  # type: ignore[attr-defined]
     cls.write = write
