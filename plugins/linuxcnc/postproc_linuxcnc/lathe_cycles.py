@@ -19,8 +19,8 @@ runs it, as a call from the cycle through its o-word loops, branches, calls and 
 evaluated with the parameters' values then (``_run_profile``; a read of the current position reads the profile's own
 point); there the cycle's line is written as its moves (the flattened program has no subprograms). In a program
 kept as written (not run), its words alone are read (``_kept_words``). A plain copy to LinuxCNC keeps a cycle with a
-computed word or whose profile computes as written, its moves unknown here (``_kept_as_written``). Not modelled, so refused
-(``UnsupportedError``): in a program kept as written for another purpose, any computed word in a profile (what it
+computed word or whose profile computes as written, its moves unknown here (``_kept_as_written``). Not modelled, so
+refused (``UnsupportedError``): in a program kept as written for another purpose, any computed word in a profile (what it
 reads has no value without the program's run) and a control statement or parameter assignment in a
 profile (read past before issue 26: a loop's moves were taken once); a profile with any word but those (a feed or
 speed is ignored there: said rather than dropped), a subprogram not
@@ -295,8 +295,8 @@ def _computes(written: list[Written]) -> bool:
 
 
 def _kept_as_written(block: Block, ctx: Context, name: str, words: dict[str, Any], used: set[str]) -> None:
-    """A cycle with a computed word or whose profile computes, in a LinuxCNC program copied as written (``program_mode`` 'keep': the
-    target is LinuxCNC itself, nothing is flattened and nothing is run, ``postproc.api``): its line goes out as
+    """A cycle with a computed word or whose profile computes, in a LinuxCNC program copied as written
+    (``program_mode`` 'keep': the target is LinuxCNC itself, nothing is flattened and nothing is run, ``postproc.api``): its line goes out as
     written (``NativeCode``), the profile's subprogram with it, and LinuxCNC evaluates the profile where the cycle
     runs, as it would have in the source [V: ``interp_g7x.cc`` reads ``O<q> CALL`` when the cycle runs]. Its moves
     are not known here, so neither is where the tool ends: X and Z are unknown after it, and a later step that
