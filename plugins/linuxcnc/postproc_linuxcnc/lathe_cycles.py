@@ -20,8 +20,8 @@ evaluated with the parameters' values then (``_run_profile``; a read of the curr
 point); there the cycle's line is written as its moves (the flattened program has no subprograms). In a program
 kept as written (not run), its words alone are read (``_kept_words``). A plain copy to LinuxCNC keeps a cycle with a
 computed word or whose profile computes as written, its moves unknown here (``_kept_as_written``). Not modelled, so
-refused (``UnsupportedError``): in a program kept as written for another purpose, any computed word in a profile (what it
-reads has no value without the program's run) and a control statement or parameter assignment in a
+refused (``UnsupportedError``): in a program kept as written for another purpose, any computed word in a profile
+(what it reads has no value without the program's run) and a control statement or parameter assignment in a
 profile (read past before issue 26: a loop's moves were taken once); a profile with any word but those (a feed or
 speed is ignored there: said rather than dropped), a subprogram not
 defined before the cycle, the cycle in incremental mode (G91), a P of G70 that is no whole number from 1,
@@ -296,14 +296,14 @@ def _computes(written: list[Written]) -> bool:
 
 def _kept_as_written(block: Block, ctx: Context, name: str, words: dict[str, Any], used: set[str]) -> None:
     """A cycle with a computed word or whose profile computes, in a LinuxCNC program copied as written
-    (``program_mode`` 'keep': the target is LinuxCNC itself, nothing is flattened and nothing is run, ``postproc.api``): its line goes out as
-    written (``NativeCode``), the profile's subprogram with it, and LinuxCNC evaluates the profile where the cycle
-    runs, as it would have in the source [V: ``interp_g7x.cc`` reads ``O<q> CALL`` when the cycle runs]. Its moves
-    are not known here, so neither is where the tool ends: X and Z are unknown after it, and a later step that
-    needs them refuses with its own located error. ``verify`` and ``toolpath`` run the program
-    (``program_mode`` 'execute'), so they read the cycle's moves (``_run_profile``). Another target, or a copy
-    with ``--units``/``--transform`` (mode 'auto'), needs the moves: the refusal (``_kept_words``) stands, and a
-    program that computes is then flattened (``postproc.api._keep_check``)."""
+    (``program_mode`` 'keep': the target is LinuxCNC itself, nothing is flattened and nothing is run,
+    ``postproc.api``): its line goes out as written (``NativeCode``), the profile's subprogram with it, and LinuxCNC
+    evaluates the profile where the cycle runs, as it would have in the source [V: ``interp_g7x.cc`` reads ``O<q>
+    CALL`` when the cycle runs]. Its moves are not known here, so neither is where the tool ends: X and Z are
+    unknown after it, and a later step that needs them refuses with its own located error. ``verify`` and
+    ``toolpath`` run the program (``program_mode`` 'execute'), so they read the cycle's moves (``_run_profile``).
+    Another target, or a copy with ``--units``/``--transform`` (mode 'auto'), needs the moves: the refusal
+    (``_kept_words``) stands, and a program that computes is then flattened (``postproc.api._keep_check``)."""
     block.add(NativeCode(ctx.dialect, f"{name} ({KEPT_CYCLE})", block.text or ""))
     used.update(words)
     state = ctx.state
