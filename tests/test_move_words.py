@@ -9,7 +9,7 @@ the steps that note them instead of writing their position at once (the frame ev
 
 from __future__ import annotations
 
-from hypothesis import given
+from hypothesis import example, given
 from hypothesis import strategies as st
 
 from postproc.context import Context
@@ -117,3 +117,33 @@ def test_one_reading_for_a_run() -> None:
 def _target() -> type:
     from postproc.plugins import default_registry
     return default_registry().dialect("grbl")
+
+
+arc_moves = st.tuples(st.sampled_from(["linear", "rapid", "cw", "ccw"]), plain_axes,
+                      st.sampled_from(["ijk", "ijk", "r", "none"]))
+
+
+@given(st.lists(arc_moves, max_size=12))
+@example([("linear", {"X": 0.0, "Y": 0.0}, "none"), ("cw", {"X": 50.0, "Y": 0.0}, "r"), ("ccw", {"X": 0.0}, "ijk")])
+def test_the_arc_pass_takes_a_kept_centre_arc_as_a_straight_move(moves: list[tuple[str, dict[str, float], str]]) -> None:
+    """From a source whose controller keeps the programmed centre (Fanuc's), the settle pass follows a plain I/J/K
+    arc as a straight move (``_Arcs.kept_centres``): the same position, the block as it was, as through ``take``
+    (an R arc and a centreless one go through ``take`` either way: the example's half circle by R is written by
+    I/J/K, ``settle_arc_ends``)."""
+    fast, slow = _ctx(), _ctx()
+    fast_step = _Arcs(fast, ArcOption("settle"), _target())
+    slow_step = _Arcs(slow, ArcOption("settle"), _target())
+    assert fast_step.kept_centres
+    for n, (mode, given, centre) in enumerate(moves):
+        blocks = []
+        for _ in range(2):
+            block = Block(n + 1, "", "\n")
+            arc = mode in ("cw", "ccw")
+            block.sections = {"Motion": Motion(mode, dict(given), {"X": 1.5, "Y": -0.5} if arc and centre == "ijk" else None,
+                                               25.0 if arc and centre == "r" else None)}
+            blocks.append(block)
+        assert fast_step.take_move(blocks[0]) == slow_step.take(blocks[1]) is None
+        fast_step.rewriter.settle()
+        slow_step.rewriter.settle()
+        assert fast_step.rewriter.position == slow_step.rewriter.position
+        assert blocks[0].sections["Motion"] == blocks[1].sections["Motion"]

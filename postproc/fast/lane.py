@@ -12,6 +12,7 @@ wraps it keeps the lane, and one that replaces it never consults it.)
 
 from __future__ import annotations
 
+import re
 from typing import Final
 
 from ..rs274.writer import WordWriter
@@ -69,6 +70,44 @@ def choose(writer: Writer) -> Lane | None:
     return None
 
 
+def passes_below(lane: Lane, rule: object) -> int:
+    """The length below which a text ``lane`` writes passes ``rule`` (the target's ``LINE_RULE``) as it is, told
+    from the rule's own ``fits`` (no dialect's class overrides it); 0: every text goes to the rule. Only the
+    straight and copy lanes write nothing but a canonical block's words (``numbers.CANONICAL_BLOCK``: ASCII
+    letters, digits, points, minus signs, single spaces) with the motion code of the target's table and a line
+    end (LF, CR LF or CR), so that only the length of such a text can fail a rule (``tests/test_line_pass.py``).
+    grbl's rule looked at every character of every block for its real-time ones (~630 instructions a block,
+    callgrind); LinuxCNC's at its length (~90)."""
+    if not isinstance(lane, (StraightLane, CopyLane)) or rule is None:
+        return 0
+    if isinstance(lane, StraightLane):
+        for spelled in (lane.rapid, lane.linear, lane.cw, lane.ccw):
+            if spelled is not None and not _WORD.fullmatch(spelled[0]):
+                return 0
+    owner = next((c for c in type(rule).__mro__ if "fits" in c.__dict__), None)
+    if owner is None:
+        return 0
+    module = owner.__module__
+    if module == "postproc.grbl_family.text":  # (loaded: the rule is made of its class; imported only then)
+        from ..grbl_family.text import GrblLines
+        if owner is GrblLines and isinstance(rule, GrblLines):
+            return rule.buffer_size  # a shorter line passes as it is where it is plain ASCII without a real-time
+            # character, which canonical words and a line end are (``GrblLines.fits``)
+    elif module == "postproc.output.byte_lines":
+        from ..output.byte_lines import ByteLengthLines
+        if owner is ByteLengthLines and isinstance(rule, ByteLengthLines):
+            return rule.limit + 1  # ASCII: a character a byte (``ByteLengthLines.fits``)
+    return 0
+
+
+_WORD: Final = re.compile(r"[A-Z][0-9.]+")
+"""A motion code the straight lane writes into a canonical block's words keeps them plain (``G1``, ``G01``)."""
+
+
 def install(writer: Writer) -> None:
-    """Give ``writer`` its run's fast lane (``Writer.lane``), where one applies."""
-    writer.lane = choose(writer)
+    """Give ``writer`` its run's fast lane (``Writer.lane``), where one applies, with the length below which its
+    texts pass the target's line rule as they are (``Lane.passes_below``)."""
+    lane = choose(writer)
+    if lane is not None:
+        lane.passes_below = passes_below(lane, getattr(writer.target, "LINE_RULE", None))
+    writer.lane = lane

@@ -69,6 +69,11 @@ class Lane:
     function: the writer's loop calls it natively (compiled: a bound method's call cost ~200 instructions a
     block)."""
 
+    def __init__(self) -> None:
+        self.passes_below = 0
+        """A text ``write`` gives that is shorter than this passes the run's line rule as it is (set where the
+        run's rule tells so from the length alone, ``postproc.fast.lane``; 0: every text goes to the rule)."""
+
     def write(self, block: Block) -> str | None:
         raise NotImplementedError
 
@@ -129,6 +134,9 @@ class Writer(abc.ABC):
                                          target is None or target.LOWER_CASE, getattr(target, "LINE_RULE", None))
         emit = put if line_format is None else line_format.wrap(put)
         """A text formatted (``LineFormat.line``), to the output."""
+        passes_below = lane.passes_below if lane is not None and line_format is not None and not line_format.formats \
+            else 0
+        """A text of the lane shorter than this passes the line rule as it is (``Lane.passes_below``): not looked at."""
         generated = sequences.per_block
         displacement = None
         displaced: set[str] = set()
@@ -159,6 +167,7 @@ class Writer(abc.ABC):
                 self._emit_template(emit, output_map, line_format, getattr(text_of, "template"), getattr(text_of, "text"))
                 continue
             failed = False
+            short = 0  # below this length the block's text passes the line rule as it is (the lane's: passes_below)
             if displacement is not None and (displaced or dropped or "DistanceMode" in block.sections) \
                     and _displaced(self, displacement, block, dropped):
                 continue  # (the common block, no axis displaced, nothing dropped, is not _displaced's: no call)
@@ -166,6 +175,8 @@ class Writer(abc.ABC):
                 text = lane.write(block) if lane is not None else None
                 if text is None:
                     text = write_block(block)
+                else:
+                    short = passes_below
             except UnsupportedError as err:
                 text = self.unsupported_block(block, err)
             except PostprocError as err:
@@ -188,7 +199,8 @@ class Writer(abc.ABC):
                     output_map.source = block.line
                 if line_format is not None:
                     line_format.block, line_format.template = block, None
-                    text = line_format.line(text)
+                    if len(text) >= short:
+                        text = line_format.line(text)
                 if sink is not None:
                     sink.write(text)
                 else:
