@@ -17,9 +17,7 @@ import math
 from dataclasses import replace
 from typing import Final
 
-from .arc_paths import ArcPath, deviation
-from .circle_gap import circle_gap_bounds
-from .arcs import arc_sweep
+from .arc_end_math import centre_shift, circle_spiral_gap, moved_centre, rule_allows, rule_judged, rule_limit
 from ..records import record
 from ..ir.state import MM_PER_INCH
 
@@ -106,32 +104,20 @@ class ArcEndRule:
 
     def limit(self, r_start: float, r_end: float, inch: bool, chord: float = 0.0) -> float:
         """The largest difference of radii (with ``of_centre_shift``: move of the centre) accepted for an arc of
-        these radii and this chord (program units)."""
-        absolute = self.inch if inch else self.metric
-        if self.relative <= 0.0:
-            return absolute
-        if self.of_centre_shift:
-            shift = self.shift(r_start, r_end, chord)
-            radius = math.sqrt(max((r_start * r_start + r_end * r_end) / 2.0 - shift * shift, 0.0))
-        else:
-            radius = r_start if self.of_start else max(r_start, r_end)
-        share = self.relative * radius
-        if self.ceiling > 0.0:
-            share = min(share, self.ceiling * absolute)
-        return max(absolute, share)
+        these radii and this chord (program units; ``arc_end_math.rule_limit``)."""
+        return rule_limit(self, r_start, r_end, inch, chord)
 
     def judged(self, r_start: float, r_end: float, chord: float = 0.0) -> float:
         """What the limits bound for an arc of these radii and this chord: the difference of radii, or (with
-        ``of_centre_shift``) the centre's move."""
-        return self.shift(r_start, r_end, chord) if self.of_centre_shift else abs(r_start - r_end)
+        ``of_centre_shift``) the centre's move (``arc_end_math.rule_judged``)."""
+        return rule_judged(self, r_start, r_end, chord)
 
     @staticmethod
     def shift(r_start: float, r_end: float, chord: float) -> float:
         """How far the centre moves to the nearest point of the chord's perpendicular bisector: the programmed
-        centre's distance from it along the chord, (r_start^2 - r_end^2) / (2 chord) (a full circle: none)."""
-        if chord <= 0.0:
-            return 0.0 if r_start == r_end else math.inf
-        return abs(r_start * r_start - r_end * r_end) / (2.0 * chord)
+        centre's distance from it along the chord, (r_start^2 - r_end^2) / (2 chord) (a full circle: none;
+        ``arc_end_math.centre_shift``)."""
+        return centre_shift(r_start, r_end, chord)
 
     def centre_move(self, r_start: float, r_end: float, chord: float) -> float:
         """How far the controller moves the centre of an accepted arc (program units): none for ``SPIRAL``;
@@ -152,47 +138,23 @@ class ArcEndRule:
         """How far the circle this rule runs (about the centre it moves to) lies from a spiral controller's path for
         the same arc, the spiral from ``s`` to ``e`` about ``c`` whose radius changes evenly with the angle: the
         largest distance between the two paths, as ``verify`` measures it (``postproc.geometry.arc_paths.deviation``,
-        with its ``floor``); 0 for a ``SPIRAL`` rule."""
+        with its ``floor``); 0 for a ``SPIRAL`` rule (``arc_end_math.circle_spiral_gap``)."""
         if self.runs == SPIRAL:
             return 0.0
-        moved = self.centre(s, e, c)
-        turn = _turn(s, e, c, clockwise)
-        if floor >= 0.0:  # most arcs: the closed-form bound decides (``circle_gap_bounds``), no search
-            bounds = circle_gap_bounds(s, e, c, moved, turn)
-            if bounds is not None and bounds[1] <= floor:
-                return bounds[1]
-        spiral = ArcPath(s, e, c, turn, [], [])
-        return deviation(spiral, ArcPath(s, e, moved, _turn(s, e, moved, clockwise), [], []), floor)
+        return circle_spiral_gap(self.runs == NEAREST_CENTRE, s, e, c, clockwise, floor)
 
     def allows(self, r_start: float, r_end: float, inch: bool, chord: float = 0.0) -> bool:
         """Whether the controller runs an arc with these start and end radii and this chord (program units;
-        the chord matters only ``of_centre_shift``)."""
-        return self.judged(r_start, r_end, chord) <= self.limit(r_start, r_end, inch, chord) * (1.0 + 1e-9)
+        the chord matters only ``of_centre_shift``; ``arc_end_math.rule_allows``)."""
+        return rule_allows(self, r_start, r_end, inch, chord)
 
     def centre(self, s: tuple[float, float], e: tuple[float, float],
                c: tuple[float, float]) -> tuple[float, float]:
-        """The centre the controller turns about for an accepted arc from ``s`` to ``e`` programmed about ``c``."""
+        """The centre the controller turns about for an accepted arc from ``s`` to ``e`` programmed about ``c``
+        (``arc_end_math.moved_centre``)."""
         if self.runs == SPIRAL:
             return c
-        r0 = math.hypot(s[0] - c[0], s[1] - c[1])
-        dx, dy = e[0] - s[0], e[1] - s[1]
-        chord = math.hypot(dx, dy)
-        if chord == 0.0:
-            return c  # a full circle: its end is its start, on the circle
-        mid = (s[0] + dx / 2.0, s[1] + dy / 2.0)
-        nx, ny = -dy / chord, dx / chord  # the bisector's direction
-        if self.runs == NEAREST_CENTRE:
-            along = (c[0] - mid[0]) * nx + (c[1] - mid[1]) * ny
-            return mid[0] + along * nx, mid[1] + along * ny
-        side = 1.0 if (c[0] - mid[0]) * nx + (c[1] - mid[1]) * ny >= 0.0 else -1.0
-        h = math.sqrt(max(r0 * r0 - chord * chord / 4.0, 0.0))
-        return mid[0] + side * h * nx, mid[1] + side * h * ny
-
-
-def _turn(s: tuple[float, float], e: tuple[float, float], c: tuple[float, float], clockwise: bool) -> float:
-    """How far an arc from ``s`` to ``e`` about ``c`` turns (radians, negative clockwise; end on start: a turn)."""
-    sweep = arc_sweep(s, e, c, clockwise)
-    return -sweep if clockwise else sweep
+        return moved_centre(self.runs == NEAREST_CENTRE, s, e, c)
 
 
 TARGET_ARC_END: Final = "target_arc_end"
