@@ -12,27 +12,14 @@ and the modal step calls them directly. One computation in either build: only wh
 from __future__ import annotations
 
 import math
-from typing import Final, Protocol
+from math import asin, atan2, hypot  # (no primitive in mypyc: a global's look-up, not the module's attribute)
+from typing import TYPE_CHECKING, Final
 
 from .arc_paths import ArcPath, deviation
 from .arcs import arc_sweep
 
-
-class Limits(Protocol):
-    """What ``rule_limit`` and ``rule_judged`` read of a rule (``ArcEndRule``'s fields)."""
-
-    @property
-    def metric(self) -> float: ...
-    @property
-    def inch(self) -> float: ...
-    @property
-    def relative(self) -> float: ...
-    @property
-    def ceiling(self) -> float: ...
-    @property
-    def of_start(self) -> bool: ...
-    @property
-    def of_centre_shift(self) -> bool: ...
+if TYPE_CHECKING:
+    from .arc_end import ArcEndRule  # (a record of an interpreted module: its fields are read by name)
 
 
 def centre_shift(r_start: float, r_end: float, chord: float) -> float:
@@ -43,7 +30,7 @@ def centre_shift(r_start: float, r_end: float, chord: float) -> float:
     return abs(r_start * r_start - r_end * r_end) / (2.0 * chord)
 
 
-def rule_limit(rule: Limits, r_start: float, r_end: float, inch: bool, chord: float = 0.0) -> float:
+def rule_limit(rule: "ArcEndRule", r_start: float, r_end: float, inch: bool, chord: float = 0.0) -> float:
     """``ArcEndRule.limit``: the largest difference of radii (with ``of_centre_shift``: move of the centre) ``rule``
     accepts for an arc of these radii and this chord (program units)."""
     absolute = rule.inch if inch else rule.metric
@@ -62,13 +49,13 @@ def rule_limit(rule: Limits, r_start: float, r_end: float, inch: bool, chord: fl
     return max(absolute, share)
 
 
-def rule_judged(rule: Limits, r_start: float, r_end: float, chord: float = 0.0) -> float:
+def rule_judged(rule: "ArcEndRule", r_start: float, r_end: float, chord: float = 0.0) -> float:
     """``ArcEndRule.judged``: what ``rule``'s limits bound for an arc of these radii and this chord: the difference
     of radii, or (with ``of_centre_shift``) the centre's move."""
     return centre_shift(r_start, r_end, chord) if rule.of_centre_shift else abs(r_start - r_end)
 
 
-def rule_allows(rule: Limits, r_start: float, r_end: float, inch: bool, chord: float = 0.0) -> bool:
+def rule_allows(rule: "ArcEndRule", r_start: float, r_end: float, inch: bool, chord: float = 0.0) -> bool:
     """``ArcEndRule.allows``: whether the controller runs an arc with these start and end radii and this chord
     (program units; the chord matters only ``of_centre_shift``)."""
     return rule_judged(rule, r_start, r_end, chord) <= rule_limit(rule, r_start, r_end, inch, chord) * (1.0 + 1e-9)
@@ -79,9 +66,9 @@ def moved_centre(nearest: bool, s: tuple[float, float], e: tuple[float, float],
     """The centre a centre-moving controller turns about for an accepted arc from ``s`` to ``e`` programmed about
     ``c``: the nearest point of the chord's perpendicular bisector (``nearest``: ``arc_end.NEAREST_CENTRE``), else the
     point there at the start radius on the programmed centre's side (``arc_end.START_RADIUS``)."""
-    r0 = math.hypot(s[0] - c[0], s[1] - c[1])
+    r0 = hypot(s[0] - c[0], s[1] - c[1])
     dx, dy = e[0] - s[0], e[1] - s[1]
-    chord = math.hypot(dx, dy)
+    chord = hypot(dx, dy)
     if chord == 0.0:
         return c  # a full circle: its end is its start, on the circle
     mid = (s[0] + dx / 2.0, s[1] + dy / 2.0)
@@ -156,11 +143,11 @@ def circle_gap_bounds(s: tuple[float, float], e: tuple[float, float], c: tuple[f
     trigonometry: every arc an ISG or Fagor translation reads comes here (a builtin call is ~500 instructions)."""
     sx, sy = s[0] - c[0], s[1] - c[1]
     ex, ey = e[0] - c[0], e[1] - c[1]
-    r0 = math.hypot(sx, sy)
-    r1 = math.hypot(ex, ey)
+    r0 = hypot(sx, sy)
+    r1 = hypot(ex, ey)
     rho_min = r0 if r0 < r1 else r1
     dx, dy = c[0] - m[0], c[1] - m[1]
-    d = math.hypot(dx, dy)
+    d = hypot(dx, dy)
     span = turn if turn > 0.0 else -turn
     if not (0.0 < span < _TWO_PI and 0.0 < rho_min and d <= 0.5 * rho_min):
         return None
@@ -170,8 +157,8 @@ def circle_gap_bounds(s: tuple[float, float], e: tuple[float, float], c: tuple[f
     w = math.pi * d / (rho_min - d) + 1e-6  # at least 2 asin(d / (rho_min - d)) (asin(y) <= pi y / 2 on [0, 1])
     if not w < span < _TWO_PI - w:
         return None
-    radius = math.hypot(s[0] - m[0], s[1] - m[1])
-    wobble = math.hypot(e[0] - m[0], e[1] - m[1]) - radius
+    radius = hypot(s[0] - m[0], s[1] - m[1])
+    wobble = hypot(e[0] - m[0], e[1] - m[1]) - radius
     if wobble < 0.0:
         wobble = -wobble
     # P at the ends (d cos(angle - angle of delta) = delta . u, u the end's direction from c), and where its
@@ -186,9 +173,9 @@ def circle_gap_bounds(s: tuple[float, float], e: tuple[float, float], c: tuple[f
     if 0.0 < d and (k if k > 0.0 else -k) <= d:
         sign = 1.0 if turn > 0.0 else -1.0
         lean = sign * k / d
-        base = math.asin(lean)
+        base = asin(lean)
         rise = d * math.sqrt(1.0 - lean * lean)
-        offset = math.atan2(sx * dy - sy * dx, sx * dx + sy * dy)  # delta's angle less the start's (about c)
+        offset = atan2(sx * dy - sy * dx, sx * dx + sy * dy)  # delta's angle less the start's (about c)
         t = (sign * (base + offset)) % _TWO_PI
         if t <= span:
             p = r0 + k * t + rise - radius
