@@ -9,6 +9,7 @@ error. A translation's output is read back under the target's rule (``verify``),
 would refuse is found there.
 
 The facts behind each rule are in the dialect (or family base) that declares it, tagged with their source.
+The rule's arithmetic is ``arc_end_math`` (compiled: every arc an ISG or Fagor translation reads is judged by it).
 """
 
 from __future__ import annotations
