@@ -1,5 +1,5 @@
 """The closed-form bounds of how far a centre-moving controller's circle lies from a spiral controller's path
-(``postproc.geometry.arc_end.circle_gap_bounds``), which let the ISG/Fagor arc check skip the search of
+(``postproc.geometry.arc_end_math.circle_gap_bounds``), which let the ISG/Fagor arc check skip the search of
 ``postproc.geometry.arc_paths.deviation``: held to that full computation on random arcs (hypothesis), and to a gap
 derived by hand."""
 
@@ -11,7 +11,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from postproc.geometry.arc_end import NEAREST_CENTRE, START_RADIUS, ArcEndRule, circle_gap_bounds
+from postproc.geometry.arc_end import NEAREST_CENTRE, START_RADIUS, ArcEndRule
+from postproc.geometry.arc_end_math import circle_gap_bounds
 from postproc.geometry.arcs import arc_sweep
 
 _RULES = {runs: ArcEndRule(metric=1.0, inch=1.0, runs=runs) for runs in (NEAREST_CENTRE, START_RADIUS)}

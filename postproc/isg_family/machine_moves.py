@@ -24,6 +24,8 @@ from __future__ import annotations
 
 from typing import Final
 
+from mypy_extensions import mypyc_attr
+
 from ..context import Context
 from ..dialect import Dialect
 from ..ir import Block, DistanceMode, MachineCoordinates, Motion
@@ -36,6 +38,7 @@ QUIET: Final = frozenset(("Comments", "Sequence"))
 """A block of only these reads no distance mode."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class AbsoluteMachineMoves(LoweringStep):
     """Lowering step: see the module docstring."""
 
@@ -46,6 +49,7 @@ class AbsoluteMachineMoves(LoweringStep):
 absolute_machine_moves = AbsoluteMachineMoves()
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class _AbsoluteMachineMoves(BlockStep):
     """One run: the distance mode and units the program reads, and whether a ``G91`` is owed. A block that
     is only a move is its business only under incremental distance (it may be a reference return, ``G28 X0.``)

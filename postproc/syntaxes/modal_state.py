@@ -18,7 +18,8 @@ from typing import Final, NoReturn, cast
 
 from postproc.block_rules import ZERO_FEED, ArcError, arc_centre, check_values, needs_feed, per_rev_problem
 from postproc.interp.control import ASSIGN, CONTROL
-from postproc.geometry.arc_end import SPIRAL, TARGET_ARC_END, ArcEndRule
+from postproc.geometry.arc_end import NEAREST_CENTRE, SPIRAL, TARGET_ARC_END, ArcEndRule
+from postproc.geometry.arc_end_math import circle_spiral_gap, rule_allows
 from postproc.errors import ProgramError, UnsupportedError
 from postproc.ir.event_order import MOVING, after_motion
 from postproc.geometry.arcs import ARC_TOLERANCE_MM, PLACES
@@ -309,10 +310,11 @@ def _target_accepts(block: Block, ctx: Context, motion: Motion, target: tuple[st
     r0 = hypot(s[0] - c[0], s[1] - c[1]) / scale
     r1 = hypot(e[0] - c[0], e[1] - c[1]) / scale
     chord = hypot(e[0] - s[0], e[1] - s[1]) / scale
-    if rule.allows(r0, r1, inch, chord):
-        if rule.runs == SPIRAL:
+    if rule_allows(rule, r0, r1, inch, chord):  # (``rule.allows`` and ``rule.spiral_gap``, called compiled)
+        runs = rule.runs
+        if runs == SPIRAL:
             return
-        gap = rule.spiral_gap(s, e, c, motion.mode == "cw", SPIRAL_AS_CIRCLE_MM)
+        gap = circle_spiral_gap(runs == NEAREST_CENTRE, s, e, c, motion.mode == "cw", SPIRAL_AS_CIRCLE_MM)
         if gap <= SPIRAL_AS_CIRCLE_MM:
             return
         moved = rule.centre_move(r0, r1, chord)
