@@ -17,6 +17,7 @@ from mypy_extensions import mypyc_attr
 from ..ir.expr import Expr
 from ..ir import Block, Feed, Motion, Section, Sequence
 from ..numbers import MAX_PLACES, SHORT_RANGE, as_written
+from ..output.line_feeds import Batch
 from ..output.writer_base import Lane
 from ..rs274.motion_words import tiny_arc
 from ..rs274.writer import WordWriter
@@ -103,7 +104,7 @@ class CopyLane(Lane):
 class SourceLane(Lane):
     """A straight block copied to its own dialect, not normalised, is its source line and end of line, as
     ``words_block`` copies a block (installed where the writer copies its dialect's blocks: ``copy_ok``),
-    canonical or not (its words are not read)."""
+    canonical or not (its words are not read). It puts them into the output itself (``put``), as two pieces."""
 
     def __init__(self, writer: WordWriter) -> None:
         super().__init__()
@@ -112,9 +113,25 @@ class SourceLane(Lane):
         """As ``CopyLane.per_rev_checked``."""
         self.points = bool(writer.rounding or writer.whole_speed)
         """``words_block`` keeps the block a rounding warning points at."""
+        self.puts = True
 
     def write(self, block: Block) -> str | None:
         """The block's source line, or None."""
+        text = self.copied(block)
+        return None if text is None else text + block.eol
+
+    def put(self, block: Block, out: Batch) -> bool:
+        """``write``'s answer as its two pieces, the source line and its end of line (``Batch.write_line``); a
+        blank line is left to the writer (False), which checks it."""
+        text = block.text
+        if text is None or not text or text.isspace() or self.copied(block) is None:
+            return False
+        out.write_line(text, block.eol)
+        return True
+
+    def copied(self, block: Block) -> str | None:
+        """The source line of a straight block, the writer's state brought past it as ``words_block`` brings it
+        (the feed rate, the block a warning points at); None: not a straight block (nothing changed)."""
         sections = block.sections
         text = block.text
         if text is None:
@@ -129,7 +146,7 @@ class SourceLane(Lane):
             writer.at_block = block
         if fed:
             writer.modal.apply(sections)
-        return text + block.eol
+        return text
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
