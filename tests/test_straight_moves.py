@@ -27,6 +27,7 @@ from postproc.ir import Block
 from postproc.plugins import default_registry
 from postproc.rs274.writer import WordWriter
 from postproc.setup.machine_setup import MachineSetup
+from postproc.output.line_feeds import Batch
 from postproc.output.writer_base import Lane, Writer
 
 SOURCES = ("fanuc", "linuxcnc")
@@ -292,6 +293,42 @@ class _Normalizing(WordWriter):
 
     def normalized(self, block: Block) -> str:
         return super().normalized(block).lower()
+
+
+def test_the_copy_puts_its_straight_lines(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A copy's straight blocks reach the output through ``SourceLane.put`` (the line and its end of line as two
+    pieces, ``Batch.write_line``); a blank line, a comment, a tape mark and the other blocks through the writer's
+    general path: the copy is the program, byte for byte (hand-derived: every line as written)."""
+    put: list[str | None] = []
+    install = postproc.fast.lane.install
+
+    def counting(writer: Writer) -> None:
+        install(writer)
+        lane = writer.lane
+        assert isinstance(lane, SourceLane) and lane.puts
+
+        class Counted(Lane):
+            def __init__(self) -> None:
+                super().__init__()
+                self.puts = True
+
+            def write(self, block: Block) -> str | None:
+                assert lane is not None
+                return lane.write(block)
+
+            def put(self, block: Block, out: Batch) -> bool:
+                assert lane is not None
+                done = lane.put(block, out)
+                if done:
+                    put.append(block.text)
+                return done
+        writer.lane = Counted()
+
+    monkeypatch.setattr(postproc.fast.lane, "install", counting)
+    program = ["%", "O1000 (COPY)", "G21 G90 G17", "G0 X0. Y0.", "   ", "N10 G1 Z-1. F300.", "N20  X10.5 Y2.25",
+               "(A COMMENT)", "", "N30 X-3.125", "M30", "%"]
+    assert _run(program, "fanuc", normalize=False) == "".join(line + "\n" for line in program)
+    assert put == ["G0 X0. Y0.", "N10 G1 Z-1. F300.", "N20  X10.5 Y2.25", "N30 X-3.125"]
 
 
 def test_an_override_turns_the_lane_off() -> None:

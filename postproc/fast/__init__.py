@@ -5,7 +5,8 @@ way; a shortcut here copies part of that way for the commonest blocks, is chosen
 where the classes it copies are the base's own, and is held to the general path by a differential
 property test. A plugin declares nothing for it.
 
-* ``lane``: the writer's lane (``install``), ``straight``: its shortcuts (``StraightLane``, ``CopyLane``);
+* ``lane``: the writer's lane (``install``), ``straight``: its shortcuts (``StraightLane``, ``CopyLane``,
+  ``SourceLane``, which puts a copied line into the output batch itself: ``Lane.put``);
   ``tests/test_straight_moves.py``.
 * ``reading``: the reading lanes (``install_reading``), ``plain``: the plain-block lane of the block syntax
   and ``plain_ngc`` the RS274/NGC one (``tests/test_plain_blocks.py``), ``holes``: the next-hole lane of the

@@ -1,8 +1,10 @@
 """Where a program stands while its cutter compensation is resolved (``cutter_compensation``): the state of one
 resolution, and the programmed point it follows through the blocks run without compensation.
 
-The common block (a plain absolute move while no compensation is on) only notes its X, Y and Z as numbers
-(``ProgrammedPoint._note``); they are brought into the point (``_settle``) before anything reads it. A move by
+The common block (a plain absolute move while no compensation is on) is only kept (``ProgrammedPoint._note``):
+its X, Y and Z are read when something asks where the program stands (``_settle``, before anything reads the
+point), from the last kept move that names each, so a program that never turns compensation on reads none of its
+moves (a copy's check: ~700 instructions a block compiled). A move by
 increments from an unknown start point makes its axis count from zero in a frame of its own (``floating``: see
 ``cutter_compensation``'s docstring). Where the other blocks leave the point (a hole cycle kept native or
 expanded, a reference return, a move in machine coordinates, a control statement) is ``point_after``'s answer,
@@ -25,12 +27,17 @@ from ..compensation.geometry_for import cutter_for
 from ..compensation.rules import CutterRules
 from ..compensation.tool_table import ToolTable
 from ..interp.control import LABEL
-from .move_words import X as _X, Y as _Y, Z as _Z, move_words
+from .move_words import X as _X, Y as _Y, Z as _Z
 from .point_after import RETURNS, compound_end, cycle_end, loses_after, unknown_axes
 from .rule_trial import RuleTrial
 
 MM_PER_INCH = 25.4
 MOVES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
+KEPT: Final = 16
+"""Plain moves ``ProgrammedPoint._note`` keeps before it reads them (``_fold``): memory stays flat whatever the
+program's length, and a fold of a CAM program's moves reads the last one (it names X, Y and Z) and drops the rest.
+The moves it drops are freed there rather than with their blocks: a few at a time (64 cost the allocator ~80
+instructions a block more, callgrind)."""
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -79,18 +86,21 @@ class ProgrammedPoint:
         self.last_register: int | None = None
         """The cutter compensation register programmed last (``register_absent="modal"``)."""
         self.pos: dict[str, float | None] = {"X": None, "Y": None, "Z": None}
-        """The programmed point, mm (None: not known since the origin moved or a reference return); the axes a
-        plain move noted since (``noted``) are brought into it before anything reads it (``_settle``)."""
+        """The programmed point, mm (None: not known since the origin moved or a reference return); the axes the
+        plain moves since programmed (``kept``, then ``noted``) are brought into it before anything reads it
+        (``_settle``)."""
+        self.kept: list[Motion] = []
+        """The plain moves since the last ``_settle`` or ``_fold``, in order, not read yet (at most ``KEPT``). A
+        kept ``Motion`` is read later than it went past: no step changes a move's words in place (a step that
+        changes them makes a new ``Motion``, as ``move_words`` also relies on)."""
         self.noted = 0
-        """Bits (``_X``, ``_Y``, ``_Z``) of the axes the plain moves since the last ``_settle`` programmed: a
-        plain move, the common block, only notes its numbers (no dictionary written, no number boxed)."""
+        """Bits (``_X``, ``_Y``, ``_Z``) of the axes the plain moves folded since the last ``_settle``
+        programmed (``_fold``: their numbers, no dictionary written, no number boxed)."""
         self.unknown = 0
         """Bits of the noted axes whose last number was computed (an expression): not known."""
         self.noted_x = 0.0
         self.noted_y = 0.0
         self.noted_z = 0.0
-        self.words = move_words(ctx)
-        """The run's reading of a plain move's numbers (``_note``)."""
         self.at: tuple[float, float] = (0.0, 0.0)
         """The controlled point in the plane the last released move ends at, mm."""
         self.at_normal = 0.0
@@ -116,51 +126,62 @@ class ProgrammedPoint:
         self.pos = {axis: None for axis in self.pos}
 
     def _note(self, motion: Motion) -> None:
-        """A plain absolute move while no compensation is on: its X, Y and Z, in mm, noted for ``_settle`` (read
-        once for every step that follows the point, ``move_words``; a move of another axis or a computed word
-        is read here)."""
+        """A plain absolute move while no compensation is on: kept, read only when something asks where the
+        program stands (``_settle``), or when ``KEPT`` moves wait (``_fold``)."""
+        kept = self.kept
+        kept.append(motion)
+        if len(kept) >= KEPT:
+            self._fold()
+
+    def _fold(self) -> None:
+        """The kept moves' X, Y and Z, in mm, into the noted numbers, as noting each in turn would leave them:
+        each axis's number is the one of the last kept move that names it (a computed word: not known), so the
+        moves are read from the last back, until each of X, Y and Z is found. The scale and the distance mode are the kept moves' own: anything that
+        changes them settles first."""
+        kept = self.kept
         scale = self.scale
-        words = self.words
-        bits = words.read(motion)
-        if bits > 0:
-            self.noted |= bits
-            self.unknown &= ~bits
-            if bits & _X:
-                self.noted_x = words.x * scale
-            if bits & _Y:
-                self.noted_y = words.y * scale
-            if bits & _Z:
-                self.noted_z = words.z * scale
-            return
-        axes = motion.axes
-        x = axes.get("X")
-        if x is not None:
-            self.noted |= _X
-            if type(x) is float:
-                self.noted_x = x * scale
-                self.unknown &= ~_X
-            else:
-                self.unknown |= _X
-        y = axes.get("Y")
-        if y is not None:
-            self.noted |= _Y
-            if type(y) is float:
-                self.noted_y = y * scale
-                self.unknown &= ~_Y
-            else:
-                self.unknown |= _Y
-        z = axes.get("Z")
-        if z is not None:
-            self.noted |= _Z
-            if type(z) is float:
-                self.noted_z = z * scale
-                self.unknown &= ~_Z
-            else:
-                self.unknown |= _Z
+        left = _X | _Y | _Z
+        at = len(kept)
+        while left and at > 0:
+            at -= 1
+            axes = kept[at].axes
+            if left & _X:
+                x = axes.get("X")
+                if x is not None:
+                    left &= ~_X
+                    self.noted |= _X
+                    if type(x) is float:
+                        self.noted_x = x * scale
+                        self.unknown &= ~_X
+                    else:
+                        self.unknown |= _X
+            if left & _Y:
+                y = axes.get("Y")
+                if y is not None:
+                    left &= ~_Y
+                    self.noted |= _Y
+                    if type(y) is float:
+                        self.noted_y = y * scale
+                        self.unknown &= ~_Y
+                    else:
+                        self.unknown |= _Y
+            if left & _Z:
+                z = axes.get("Z")
+                if z is not None:
+                    left &= ~_Z
+                    self.noted |= _Z
+                    if type(z) is float:
+                        self.noted_z = z * scale
+                        self.unknown &= ~_Z
+                    else:
+                        self.unknown |= _Z
+        kept.clear()
 
     def _settle(self) -> None:
-        """Bring the axes the plain moves noted into ``pos`` (an absolute number also ends an axis's frame of
+        """Bring the axes the plain moves programmed into ``pos`` (an absolute number also ends an axis's frame of
         its own, ``floating``)."""
+        if self.kept:
+            self._fold()
         noted = self.noted
         if not noted:
             return

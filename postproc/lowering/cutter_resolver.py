@@ -483,9 +483,9 @@ class Checking(BlockStep):
 
     def take_move(self, block: Block) -> list[Block] | None:
         """``take`` for a block the loop found only a plain move (``plain_move``): neither of its keys (``Motion``,
-        ``Sequence``) is one of ``_CHECK_GENERAL``, so an idle check only notes an absolute move, without
-        ``take``'s loop over the keys (~300 instructions a block compiled: every block of a copy); the rest goes
-        through ``take``."""
+        ``Sequence``) is one of ``_CHECK_GENERAL``, so an idle check only keeps an absolute move (``_note``: read
+        only if a G41/G42 comes), without ``take``'s loop over the keys (~300 instructions a block compiled: every
+        block of a copy); the rest goes through ``take``."""
         if self.idle and not self.stopped:
             motion = block.sections["Motion"]
             r = self.resolver

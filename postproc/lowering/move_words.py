@@ -1,8 +1,9 @@
 """The X, Y and Z numbers of a plain move, read once for every lowering step that follows the programmed point.
 
-Four steps of a translation follow where each plain move (``lower.plain_move``, most blocks of a CAM program)
+Three steps of a translation follow where each plain move (``lower.plain_move``, most blocks of a CAM program)
 takes the program: the frame evaluation (``postproc.frames.lowering``), the tool length timing
-(``length_timing``), the cutter compensation resolver (``cutter_point``) and the arc pass (``arcs``). Each read
+(``length_timing``) and the arc pass (``arcs``); the cutter compensation resolver keeps the moves unread until
+it needs the point (``cutter_point``: a copy's check, its one follower, read every move here). Each read
 the move's words from its dictionary, ~130 instructions a word compiled, and most of them wrote them into a
 dictionary of their own (``dict.update``, ~800). Here the words are read once for all of them, as native numbers
 (``MoveWords.read``: the same ``Motion`` read again by the next step costs a comparison), and a step notes them

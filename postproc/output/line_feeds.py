@@ -22,7 +22,8 @@ from mypy_extensions import mypyc_attr
 
 _LONE_CR: Final = re.compile(r"\r(?!\n)")
 BATCH: Final = 512
-"""Texts joined into one ``write`` of the output (a CAM block's is ~40 characters: ~20 kB a write)."""
+"""Texts joined into one ``write`` of the output (a CAM block's is ~40 characters: ~20 kB a write; a line put
+in two pieces, ``write_line``, counts two)."""
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -40,6 +41,15 @@ class Batch:
         if len(pending) >= BATCH:
             self.flush()
         return len(text)
+
+    def write_line(self, text: str, eol: str) -> None:
+        """``write(text + eol)`` without the joined string (~250 instructions a line compiled): both pieces wait,
+        and are joined with the batch."""
+        pending = self.pending
+        pending.append(text)
+        pending.append(eol)
+        if len(pending) >= BATCH:
+            self.flush()
 
     def flush(self) -> None:
         pending = self.pending
@@ -67,3 +77,6 @@ class LineFeeds(Batch):
             if not self.content and text.strip():
                 self.content = True
         return super().write(_LONE_CR.sub("\n", text) if "\r" in text else text)
+
+    def write_line(self, text: str, eol: str) -> None:
+        self.write(text + eol)  # (a lone CR may be the text's end and the end of line its LF: as one text)

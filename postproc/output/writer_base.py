@@ -73,9 +73,18 @@ class Lane:
         self.passes_below = 0
         """A text ``write`` gives that is shorter than this passes the run's line rule as it is (set where the
         run's rule tells so from the length alone, ``postproc.fast.lane``; 0: every text goes to the rule)."""
+        self.puts = False
+        """The lane also offers ``put`` (read once a run by ``Writer.write``)."""
 
     def write(self, block: Block) -> str | None:
         raise NotImplementedError
+
+    def put(self, block: Block, out: Batch) -> bool:
+        """Where the text ``write`` answers goes straight to the output (no source map, no line format, nothing set
+        aside) and is no blank line (which the writer checks): put it into ``out`` as ``write`` would answer it,
+        in pieces (``Batch.write_line``: no string joined for the one block); False: nothing put (the writer asks
+        ``write``, then its general path). Asked only of a lane whose ``puts`` is set."""
+        return False
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -151,6 +160,8 @@ class Writer(abc.ABC):
         footer: str | None = None
         started = False
         line = 0
+        direct = out if lane is not None and lane.puts and output_map is None and line_format is None else None
+        """Where the lane puts its blocks' texts itself (``Lane.put``)."""
         for block in blocks:
             line = block.line
             tape_mark = "TapeMark" in block.sections
@@ -172,6 +183,10 @@ class Writer(abc.ABC):
                     and _displaced(self, displacement, block, dropped):
                 continue  # (the common block, no axis displaced, nothing dropped, is not _displaced's: no call)
             try:
+                if direct is not None and self.set_aside is None and lane is not None and lane.put(block, direct):
+                    if self.opening is None and block.sections and not _only_comments(block.sections):
+                        self.opening = tape_mark
+                    continue
                 text = lane.write(block) if lane is not None else None
                 if text is None:
                     text = write_block(block)
