@@ -201,6 +201,12 @@ def test_point_less_words_take_the_lane() -> None:
                 taken.append(block.line)
             return took
 
+        def read_marked(self, block: Block, ctx: Any) -> bool:  # a canonical line, its words unmade
+            took = super().read_marked(block, ctx)
+            if took:
+                taken.append(block.line)
+            return took
+
     program = ["G21 G90 G17", "G1 X1. Y2. F100.", "N10 X1500 Y2.5", "G2 X0.5 Y3500 I-1000 J0", "G3 X1. Y0 R5000"]
     with lanes(Counted):
         shown = _read(program, "fanuc", "mill")
@@ -254,6 +260,12 @@ def test_cam_blocks_take_the_lane() -> None:
                 taken.append(block.line)
             return took
 
+        def read_marked(self, block: Block, ctx: Any) -> bool:  # a canonical line, its words unmade
+            took = super().read_marked(block, ctx)
+            if took:
+                taken.append(block.line)
+            return took
+
     program = ["G21 G90 G17", "G0 X0. Y0.", "N10 G01 Z-1. F300.", "N20 X10.5 Y2.25", "G02 X12. Y4. R2.",
                "N30 G3 X10. Y6. I-2. J0.", "X8. Y4. I0. J-2.", "G1 X0. Y0. F1200.", "G0 Z5. M9"]
     with lanes(Counted):
@@ -272,6 +284,12 @@ def test_ngc_cam_blocks_take_the_lane() -> None:
 
         def read(self, block: Block, ctx: Any, words: Any) -> bool:
             took = super().read(block, ctx, words)
+            if took:
+                taken.append(block.line)
+            return took
+
+        def read_marked(self, block: Block, ctx: Any) -> bool:  # a canonical line, its words unmade
+            took = super().read_marked(block, ctx)
             if took:
                 taken.append(block.line)
             return took

@@ -14,7 +14,7 @@ from postproc.ir import Block, Sequence
 
 from postproc.syntaxes.lines import BOM, EOF_BYTE, lexable
 
-from postproc.rs274.canonical_line import CANONICAL, CODES, LEXED, scan_words
+from postproc.rs274.canonical_line import CANONICAL, CODES, LEXED, scan_marks
 from postproc.rs274.lexer import lex_block
 
 from .macro import makes_call, read_call
@@ -49,15 +49,16 @@ def read_line(raw: str, number: int, ctx: Context) -> Block:
     # Likeliest first: a line of words only (a CAM program's every line), read whole by the family's word
     # scan (``postproc.rs274.canonical_line``), which also tells a canonical line (a writer may copy it), a
     # line without a G or M word (no call to look for) and the block number; a program number, or a block
-    # number the lexer refuses, is the lexer's, as is every other line.
-    kind, words, sequence = scan_words(text)
+    # number the lexer refuses, is the lexer's, as is every other line. A canonical line's words are left
+    # unmade (``marks``: where its letters stand), for the steps that read it from there (the plain-block lane).
+    kind, words, sequence, marks = scan_marks(text)
     if kind and not kind & LEXED:
-        block = Block(number, text, eol, words)
+        block = Block(number, text, eol, None if marks else words, marks)
         if kind & CANONICAL:
             block.canonical = True
         if sequence >= 0:
             block.sections["Sequence"] = Sequence(sequence)
-        if kind & CODES and makes_call(words):
+        if kind & CODES and makes_call(block.words):
             return _with_call(block, ctx, number, text, eol)
         return block
     try:
