@@ -25,7 +25,8 @@ import postproc.fast.reading as reading
 from postproc.api import read_program
 from postproc.errors import Diagnostics, ErrorList
 from postproc.fast.reading import install_reading
-from postproc.fast.plain import PlainLane, PlainLatheLane, whole_number
+from postproc.fast.plain import PlainLane, PlainLatheLane, span_decimal, span_whole, whole_number
+from postproc.numbers import decimal_value
 from postproc.fast.plain_ngc import NgcPlainLane
 from postproc.ir import Block
 from postproc.plugins import default_registry
@@ -221,8 +222,27 @@ def test_point_less_words_take_the_lane() -> None:
 @example(num="9999999999999999999")  # 19: by int
 @example(num="0010")
 def test_a_block_number_reads_as_int_reads_it(num: str) -> None:
-    """The lanes' block number (``whole_number``) is ``int``'s, summed for plain digits."""
+    """The lanes' block number (``whole_number``) is ``int``'s, summed for plain digits; read where it stands in a
+    line (``span_whole``) too."""
     assert whole_number(num) == int(num)
+    if num.isdigit():
+        assert span_whole(f"N{num} X1.", 1, 1 + len(num)) == int(num)
+
+
+@given(num=st.from_regex(r"-?[0-9]{0,18}\.?[0-9]{0,8}", fullmatch=True), before=st.sampled_from(["", "X", "N10 X"]))
+@example(num="0.1", before="X")
+@example(num="123456789012345.6", before="X")  # 16 digits: by decimal_value
+@example(num="-.5", before="")
+@example(num="12", before="X")  # no point: None
+def test_a_number_read_where_it_stands_is_decimal_values(num: str, before: str) -> None:
+    """``span_decimal`` (the lane's reading of a canonical line's number in place) is ``decimal_value``'s, bit for bit,
+    for a number with a decimal point, and None for any other (the general path's then)."""
+    line = f"{before}{num} Y2."
+    value = span_decimal(line, len(before), len(before) + len(num))
+    if "." in num and any(c.isdigit() for c in num):
+        assert value is not None and value.hex() == decimal_value(num).hex()
+    else:
+        assert value is None
 
 
 def test_the_lane_is_chosen_where_the_base_reads() -> None:
