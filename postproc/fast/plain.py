@@ -194,7 +194,7 @@ class PlainLane(BlockLane):
         motion code's ``mode``, point-less axis words ``bare``) its sections, or answer False where the general
         path reads it."""
         if cycle:
-            block.values = values_of(axes, sequence_value, others)
+            fill_values(block.values, axes, sequence_value, others)
             if axes:
                 block.sections["Motion"] = Motion(None, axes)
                 if bare is None:
@@ -210,7 +210,7 @@ class PlainLane(BlockLane):
             motion = plain_motion(others, axes, mode, arc_words)
             if motion is None:
                 return False
-            block.values = values_of(axes, sequence_value, others)
+            fill_values(block.values, axes, sequence_value, others)
             block.sections["Motion"] = motion
             if axes:
                 if bare is None:
@@ -220,7 +220,7 @@ class PlainLane(BlockLane):
         elif arc_words:
             return False  # I/J/K/R with no motion: the general path refuses it
         else:
-            block.values = values_of(axes, sequence_value, others)
+            fill_values(block.values, axes, sequence_value, others)
         if others is not None and "F" in others:
             block.sections["Feed"] = Feed(others["F"])
         return True
@@ -312,16 +312,18 @@ POWERS: Final[list[float]] = [1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 
 """Powers of ten, each exact in a float (``span_decimal``'s divisors, as ``decimal_value``'s)."""
 
 
-def values_of(axes: dict[str, float | Expr], sequence: object, others: dict[str, float | Expr] | None
-              ) -> dict[str, float | int | Expr]:
-    """A plain block's ``Block.values``: its axis words', its block number's and its other words' (in that
-    order: the general path's is the words', and no reader of ``values`` depends on it)."""
-    values = cast("dict[str, object]", axes.copy())
+def fill_values(values: dict[str, float | int | Expr], axes: dict[str, float | Expr], sequence: object,
+                others: dict[str, float | Expr] | None) -> None:
+    """Fill a plain block's ``Block.values`` (empty: the lanes read a block the reader left without values): its
+    axis words', its block number's and its other words' (in that order: the general path's is the words', and no
+    reader of ``values`` depends on it). The axes first, into the empty dictionary: compiled, one C call cloning
+    their table, and no second dictionary made and dropped."""
+    filled = cast("dict[str, object]", values)
+    filled.update(axes)
     if sequence is not None:
-        values["N"] = sequence
+        filled["N"] = sequence
     if others is not None:
-        values.update(others)
-    return cast("dict[str, float | int | Expr]", values)
+        filled.update(others)
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
