@@ -3,7 +3,7 @@ reported per block; the block is kept (as text only)."""
 
 from __future__ import annotations
 
-from mypy_extensions import mypyc_attr
+from mypy_extensions import i64, mypyc_attr
 
 from typing import Iterable, Iterator
 
@@ -11,6 +11,7 @@ from postproc.context import Context
 from postproc.dialect import Reader
 from postproc.errors import PostprocError
 from postproc.ir import Block, Sequence
+from postproc.ir.block import MARK_BITS, MARK_MASK
 
 from postproc.syntaxes.lines import BOM, EOF_BYTE, lexable
 
@@ -58,7 +59,7 @@ def read_line(raw: str, number: int, ctx: Context) -> Block:
             block.canonical = True
         if sequence >= 0:
             block.sections["Sequence"] = Sequence(sequence)
-        if kind & CODES and makes_call(block.words):
+        if kind & CODES and makes_call(_code_words(text, marks) if marks else words):
             return _with_call(block, ctx, number, text, eol)
         return block
     try:
@@ -73,6 +74,26 @@ def read_line(raw: str, number: int, ctx: Context) -> Block:
     except PostprocError as err:
         ctx.diagnostics.error(err, text)
         return Block(number, text, eol)
+
+
+def _code_words(text: str, marks: i64) -> list[tuple[str, str]]:
+    """The G and M words of a canonical line whose words are left unmade (``marks``), read where they stand: all
+    that ``makes_call`` looks at, without making the others."""
+    count = marks & MARK_MASK
+    rest = marks >> MARK_BITS
+    at: i64 = rest & MARK_MASK
+    size: i64 = len(text)
+    codes: list[tuple[str, str]] = []
+    i: i64 = 0
+    while i < count:
+        rest = rest >> MARK_BITS
+        following: i64 = rest & MARK_MASK if i + 1 < count else size + 1
+        letter = text[at]
+        if letter == "G" or letter == "M":
+            codes.append((letter, text[at + 1:following - 1]))
+        at = following
+        i += 1
+    return codes
 
 
 def _with_call(block: Block, ctx: Context, number: int, text: str, eol: str) -> Block:

@@ -36,10 +36,17 @@ class Block:
         self.line = line
         self.text = text
         self.eol = eol
-        self._words: list[tuple[str, str]] | None = words if words is not None or marks else []
-        self._spelled: str | None = text if marks else None
+        # (statements, not conditional expressions: compiled, ``marks if .. else 0`` boxed the i64 and unboxed it)
+        self._words: list[tuple[str, str]] | None = words
+        self._spelled: str | None = None
         """The canonical line ``marks`` point into, until its words are made (``words``)."""
-        self.marks: i64 = marks if words is None else 0
+        self.marks: i64 = 0
+        if words is None:
+            if marks:
+                self._spelled = text
+                self.marks = marks
+            else:
+                self._words = []
         """A reader's words not made yet (0: made, ``words`` holds them): where the letters of a canonical line
         (``text``, as read) stand, packed by ``postproc.rs274.canonical_line.scan_marks``. A step that reads the
         block from them (the plain-block lane) makes no word objects; reading ``words`` makes them (the same
