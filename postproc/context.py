@@ -45,6 +45,11 @@ class BlockLane(abc.ABC):
         """Give ``block`` its sections and return True, or return False leaving it as it was (the step
         then reads it)."""
 
+    def read_marked(self, block: Block, ctx: Context) -> bool:
+        """``read`` of a block whose words the reader left unmade (``Block.marks``), from its line: False
+        here (the step then reads its words)."""
+        return False
+
 
 @mypyc_attr(allow_interpreted_subclasses=True)
 class HoleLane(abc.ABC):

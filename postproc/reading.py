@@ -80,7 +80,7 @@ def _warn_if_empty(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
 def _until_something(blocks: Iterator[Block], ctx: Context) -> Iterator[Block]:
     for block in blocks:
         yield block
-        if block.words or not block.sections.keys() <= _INERT:
+        if block.marks or block.words or not block.sections.keys() <= _INERT:  # (marks: words, not made)
             return
     if not ctx.diagnostics.errors:
         ctx.diagnostics.warn("the program is empty: no line in it programs anything", Location(ctx.file, 1, 1))

@@ -10,8 +10,9 @@ from __future__ import annotations
 
 from hypothesis import given, settings, strategies as st
 
+from postproc.ir.block import MARK_WORDS, Block, marked_words
 from postproc.numbers import CANONICAL_BLOCK
-from postproc.rs274.canonical_line import CANONICAL, CODES, LEXED, NO_WORDS, WORDS, scan_words
+from postproc.rs274.canonical_line import CANONICAL, CODES, LEXED, NO_WORDS, WORDS, scan_marks, scan_words
 from postproc.rs274.lexer import WORD, WORDS_ONLY
 
 _LETTERS = "XYZABCUVWIJKRQFGMNOTHDLPSExgnmo(#:%/"
@@ -90,3 +91,58 @@ def test_the_cases_that_matter_by_hand() -> None:
     for line in ("X", "X.", "X-", "X1.2.3", "X1;Y2", "X1;;", "(C)", "X1(C)", "/X1", ":12", "%", "#1=2", "X[1]",
                  "X1.\u00e9", "X\u0661"):
         assert scan_words(line) == (0, NO_WORDS, -1), line
+
+
+def _marks_agree(line: str) -> None:
+    """``scan_marks`` answers as ``scan_words`` does, its words unmade (marks) only on a canonical line of at most
+    ``MARK_WORDS`` words and 255 characters, from which ``marked_words`` and a block's ``words`` make the same."""
+    kind, words, sequence = scan_words(line)
+    marked_kind, marked, marked_sequence, marks = scan_marks(line)
+    assert (marked_kind, marked_sequence) == (kind, sequence)
+    if marks:
+        assert kind & CANONICAL and len(words) <= MARK_WORDS and len(line) <= 255
+        assert marked is NO_WORDS and marked_words(line, marks) == words
+        block = Block(1, line, "\n", None, marks)
+        assert block.marks == marks and block.spelled() == line
+        assert block.words == words and block.marks == 0 and block.spelled() == ""  # made once, then kept
+        assert block.words is block.words
+    else:
+        assert marked == words
+        assert not (kind & CANONICAL and 0 < len(words) <= MARK_WORDS and len(line) <= 255)
+
+
+@settings(max_examples=3000)
+@given(_line)
+def test_marks_make_the_scans_words(line: str) -> None:
+    _marks_agree(line)
+
+
+@given(st.lists(st.sampled_from(["N10", "G1", "X1.5", "Y-0.25", "Z100.", "F1500.", "M3", "I0.5", "T12"]),
+                min_size=1, max_size=9), st.integers(0, 240))
+def test_marks_on_canonical_lines_of_every_length(words: list[str], pad: int) -> None:
+    line = " ".join(words)
+    _marks_agree(line)
+    _marks_agree(line + " X" + "1" * pad + ".")  # up to and past 255 characters
+
+
+def test_a_marked_block_is_the_block_of_its_words() -> None:
+    """Equal to the block read with its words made, as XML too; words set or a text changed before they are made
+    keep the block right (they come from the line as read)."""
+    line = "N10 X1.5 Y-2."
+    _, words, _, marks = scan_marks(line)
+    assert marks and Block(1, line, "\n", None, marks) == Block(1, line, "\n", list(scan_words(line)[1]))
+    changed = Block(1, line, "\n", None, marks)
+    changed.changed()
+    assert changed.text is None and changed.words == [("N", "10"), ("X", "1.5"), ("Y", "-2.")]
+    replaced = Block(1, line, "\n", None, marks)
+    replaced.words = [("X", "2.")]
+    assert replaced.marks == 0 and replaced.words == [("X", "2.")]
+    from lxml import etree
+    made = Block(1, line, "\n", [("N", "10"), ("X", "1.5"), ("Y", "-2.")])
+    assert etree.tostring(Block(1, line, "\n", None, marks).make_xml_source()) == etree.tostring(
+        made.make_xml_source())
+    import copy
+    import pickle
+    for twin in (copy.copy(Block(1, line, "\n", None, marks)), pickle.loads(pickle.dumps(Block(1, line, "\n", None,
+                                                                                            marks)))):
+        assert twin.words == made.words

@@ -25,7 +25,8 @@ import postproc.fast.reading as reading
 from postproc.api import read_program
 from postproc.errors import Diagnostics, ErrorList
 from postproc.fast.reading import install_reading
-from postproc.fast.plain import PlainLane, PlainLatheLane, whole_number
+from postproc.fast.plain import PlainLane, PlainLatheLane, span_decimal, span_whole, whole_number
+from postproc.numbers import decimal_value
 from postproc.fast.plain_ngc import NgcPlainLane
 from postproc.ir import Block
 from postproc.plugins import default_registry
@@ -201,6 +202,12 @@ def test_point_less_words_take_the_lane() -> None:
                 taken.append(block.line)
             return took
 
+        def read_marked(self, block: Block, ctx: Any) -> bool:  # a canonical line, its words unmade
+            took = super().read_marked(block, ctx)
+            if took:
+                taken.append(block.line)
+            return took
+
     program = ["G21 G90 G17", "G1 X1. Y2. F100.", "N10 X1500 Y2.5", "G2 X0.5 Y3500 I-1000 J0", "G3 X1. Y0 R5000"]
     with lanes(Counted):
         shown = _read(program, "fanuc", "mill")
@@ -215,8 +222,27 @@ def test_point_less_words_take_the_lane() -> None:
 @example(num="9999999999999999999")  # 19: by int
 @example(num="0010")
 def test_a_block_number_reads_as_int_reads_it(num: str) -> None:
-    """The lanes' block number (``whole_number``) is ``int``'s, summed for plain digits."""
+    """The lanes' block number (``whole_number``) is ``int``'s, summed for plain digits; read where it stands in a
+    line (``span_whole``) too."""
     assert whole_number(num) == int(num)
+    if num.isdigit():
+        assert span_whole(f"N{num} X1.", 1, 1 + len(num)) == int(num)
+
+
+@given(num=st.from_regex(r"-?[0-9]{0,18}\.?[0-9]{0,8}", fullmatch=True), before=st.sampled_from(["", "X", "N10 X"]))
+@example(num="0.1", before="X")
+@example(num="123456789012345.6", before="X")  # 16 digits: by decimal_value
+@example(num="-.5", before="")
+@example(num="12", before="X")  # no point: None
+def test_a_number_read_where_it_stands_is_decimal_values(num: str, before: str) -> None:
+    """``span_decimal`` (the lane's reading of a canonical line's number in place) is ``decimal_value``'s, bit for bit,
+    for a number with a decimal point, and None for any other (the general path's then)."""
+    line = f"{before}{num} Y2."
+    value = span_decimal(line, len(before), len(before) + len(num))
+    if "." in num and any(c.isdigit() for c in num):
+        assert value is not None and value.hex() == decimal_value(num).hex()
+    else:
+        assert value is None
 
 
 def test_the_lane_is_chosen_where_the_base_reads() -> None:
@@ -254,6 +280,12 @@ def test_cam_blocks_take_the_lane() -> None:
                 taken.append(block.line)
             return took
 
+        def read_marked(self, block: Block, ctx: Any) -> bool:  # a canonical line, its words unmade
+            took = super().read_marked(block, ctx)
+            if took:
+                taken.append(block.line)
+            return took
+
     program = ["G21 G90 G17", "G0 X0. Y0.", "N10 G01 Z-1. F300.", "N20 X10.5 Y2.25", "G02 X12. Y4. R2.",
                "N30 G3 X10. Y6. I-2. J0.", "X8. Y4. I0. J-2.", "G1 X0. Y0. F1200.", "G0 Z5. M9"]
     with lanes(Counted):
@@ -272,6 +304,12 @@ def test_ngc_cam_blocks_take_the_lane() -> None:
 
         def read(self, block: Block, ctx: Any, words: Any) -> bool:
             took = super().read(block, ctx, words)
+            if took:
+                taken.append(block.line)
+            return took
+
+        def read_marked(self, block: Block, ctx: Any) -> bool:  # a canonical line, its words unmade
+            took = super().read_marked(block, ctx)
             if took:
                 taken.append(block.line)
             return took

@@ -3,7 +3,7 @@ reported per block; the block is kept (as text only)."""
 
 from __future__ import annotations
 
-from mypy_extensions import mypyc_attr
+from mypy_extensions import i64, mypyc_attr
 
 from typing import Iterable, Iterator
 
@@ -11,10 +11,11 @@ from postproc.context import Context
 from postproc.dialect import Reader
 from postproc.errors import PostprocError
 from postproc.ir import Block, Sequence
+from postproc.ir.block import MARK_BITS, MARK_MASK
 
 from postproc.syntaxes.lines import BOM, EOF_BYTE, lexable
 
-from postproc.rs274.canonical_line import CANONICAL, CODES, LEXED, scan_words
+from postproc.rs274.canonical_line import CANONICAL, CODES, LEXED, scan_marks
 from postproc.rs274.lexer import lex_block
 
 from .macro import makes_call, read_call
@@ -49,15 +50,16 @@ def read_line(raw: str, number: int, ctx: Context) -> Block:
     # Likeliest first: a line of words only (a CAM program's every line), read whole by the family's word
     # scan (``postproc.rs274.canonical_line``), which also tells a canonical line (a writer may copy it), a
     # line without a G or M word (no call to look for) and the block number; a program number, or a block
-    # number the lexer refuses, is the lexer's, as is every other line.
-    kind, words, sequence = scan_words(text)
+    # number the lexer refuses, is the lexer's, as is every other line. A canonical line's words are left
+    # unmade (``marks``: where its letters stand), for the steps that read it from there (the plain-block lane).
+    kind, words, sequence, marks = scan_marks(text)
     if kind and not kind & LEXED:
-        block = Block(number, text, eol, words)
+        block = Block(number, text, eol, None if marks else words, marks)
         if kind & CANONICAL:
             block.canonical = True
         if sequence >= 0:
             block.sections["Sequence"] = Sequence(sequence)
-        if kind & CODES and makes_call(words):
+        if kind & CODES and makes_call(_code_words(text, marks) if marks else words):
             return _with_call(block, ctx, number, text, eol)
         return block
     try:
@@ -72,6 +74,26 @@ def read_line(raw: str, number: int, ctx: Context) -> Block:
     except PostprocError as err:
         ctx.diagnostics.error(err, text)
         return Block(number, text, eol)
+
+
+def _code_words(text: str, marks: i64) -> list[tuple[str, str]]:
+    """The G and M words of a canonical line whose words are left unmade (``marks``), read where they stand: all
+    that ``makes_call`` looks at, without making the others."""
+    count = marks & MARK_MASK
+    rest = marks >> MARK_BITS
+    at: i64 = rest & MARK_MASK
+    size: i64 = len(text)
+    codes: list[tuple[str, str]] = []
+    i: i64 = 0
+    while i < count:
+        rest = rest >> MARK_BITS
+        following: i64 = rest & MARK_MASK if i + 1 < count else size + 1
+        letter = text[at]
+        if letter == "G" or letter == "M":
+            codes.append((letter, text[at + 1:following - 1]))
+        at = following
+        i += 1
+    return codes
 
 
 def _with_call(block: Block, ctx: Context, number: int, text: str, eol: str) -> Block:

@@ -9,7 +9,8 @@ property test. A plugin declares nothing for it.
   ``SourceLane``, which puts a copied line into the output batch itself: ``Lane.put``);
   ``tests/test_straight_moves.py``.
 * ``reading``: the reading lanes (``install_reading``), ``plain``: the plain-block lane of the block syntax
-  and ``plain_ngc`` the RS274/NGC one (``tests/test_plain_blocks.py``), ``holes``: the next-hole lane of the
+  (``read``, and ``read_marked`` for a canonical line whose words the Fanuc reader left unmade, ``Block.marks``,
+  read where they stand in it) and ``plain_ngc`` the RS274/NGC one (``tests/test_plain_blocks.py``), ``holes``: the next-hole lane of the
   cycle resolver (``tests/test_cycle_repeat.py``).
 * ``expansion_moves``: the expansion-move lane (``install_expansion``), an expanded cycle's straight moves
   written without the writer's item dispatch (``tests/test_expansion_moves.py``).

@@ -23,7 +23,8 @@ from mypy_extensions import i64, mypyc_attr
 from ..context import BlockLane, Context
 from ..ir.expr import Expr
 from ..ir import Block, Feed, Motion
-from ..numbers import decimal_value
+from ..ir.block import MARK_BITS, MARK_MASK
+from ..numbers import DECIMAL_DIGITS, decimal_value
 from ..rs274.block_syntax import AXIS_LETTERS, CENTER_AXIS, WordBlockSyntax
 from ..rs274.lathe_block_syntax import ONE_AXIS_WORDS, SINGLE_KEY
 from ..rs274.point_mix import point_mix
@@ -121,38 +122,108 @@ class PlainLane(BlockLane):
             else:
                 break
         else:
-            if cycle:
-                block.values = values_of(axes, sequence_value, others)
-                if axes:
-                    block.sections["Motion"] = Motion(None, axes)
-                    if bare is None:
-                        _saw_pointed(ctx, axes, block.line)
-                    else:
-                        _tell_point_mix(block, ctx, axes, bare, self.in_units)
-                return True
-            if mode is None and axes:
-                mode = ctx.state.motion
-                if mode is None:
-                    return False  # the general path explains the error
-            if mode is not None:
-                motion = plain_motion(others, axes, mode, arc_words)
-                if motion is None:
-                    return False
-                block.values = values_of(axes, sequence_value, others)
-                block.sections["Motion"] = motion
-                if axes:
-                    if bare is None:
-                        _saw_pointed(ctx, axes, block.line)
-                    else:
-                        _tell_point_mix(block, ctx, axes, bare, self.in_units)
-            elif arc_words:
-                return False  # I/J/K/R with no motion: the general path refuses it
-            else:
-                block.values = values_of(axes, sequence_value, others)
-            if others is not None and "F" in others:
-                block.sections["Feed"] = Feed(others["F"])
-            return True
+            return self._finish(block, ctx, axes, others, sequence_value, mode, arc_words, bare, cycle)
         return False
+
+    def read_marked(self, block: Block, ctx: Context) -> bool:
+        # ``read`` of a canonical line whose words the reader left unmade (``Block.marks``): the same reading,
+        # each number read where it stands in the line (no word objects made; a canonical axis-type number has
+        # its point, a code's and N's are digits). A G word's number is taken out (a look-up in the code table).
+        text = block.spelled()
+        marks = block.marks
+        count = marks & MARK_MASK
+        rest = marks >> MARK_BITS
+        size: i64 = len(text)
+        axes: dict[str, float | Expr] = {}
+        others: dict[str, float | Expr] | None = None
+        sequence_value: object = None
+        mode: str | None = None
+        arc_words = False
+        seen = 0
+        cycle = ctx.state.cycle is not None
+        i: i64 = 0
+        at: i64 = rest & MARK_MASK
+        while i < count:
+            rest = rest >> MARK_BITS
+            following: i64 = rest & MARK_MASK if i + 1 < count else size + 1  # the next letter's place
+            end = following - 1
+            index = ord(text[at]) - 65
+            if index < 0 or index > 25:
+                break
+            bit = 1 << index
+            if seen & bit:
+                break
+            seen |= bit
+            kind = LETTER_KIND[index]
+            if kind == LETTER_N:
+                sequence_value = span_whole(text, at + 1, end)
+            elif kind == LETTER_AXIS:
+                value = span_decimal(text, at + 1, end)
+                if value is None:
+                    break  # (a canonical axis number has its point: never here)
+                axes[text[at]] = value
+            elif cycle:
+                break  # a code, F or a cycle word under an active cycle: the general path
+            elif kind == LETTER_F or kind == LETTER_ARC:
+                value = span_decimal(text, at + 1, end)
+                if value is None:
+                    break
+                if others is None:
+                    others = {}
+                others[text[at]] = value
+                if kind == LETTER_ARC:
+                    arc_words = True
+            elif kind == LETTER_G and mode is None:
+                key = _MOTION_KEYS.get(text[at + 1:end])
+                entry = self.syntax.table(ctx).g.get(key) if key is not None else None
+                if entry is None or entry[1] != "motion" or entry[2] not in MOTION_MODES:
+                    break
+                mode = str(entry[2])
+            else:
+                break
+            at = following
+            i += 1
+        else:
+            return self._finish(block, ctx, axes, others, sequence_value, mode, arc_words, None, cycle)
+        return False
+
+    def _finish(self, block: Block, ctx: Context, axes: dict[str, float | Expr],
+                others: dict[str, float | Expr] | None, sequence_value: object, mode: str | None, arc_words: bool,
+                bare: dict[str, str] | None, cycle: bool) -> bool:
+        """Give a block the lane read whole (its axis words ``axes``, other words ``others``, block number,
+        motion code's ``mode``, point-less axis words ``bare``) its sections, or answer False where the general
+        path reads it."""
+        if cycle:
+            fill_values(block.values, axes, sequence_value, others)
+            if axes:
+                block.sections["Motion"] = Motion(None, axes)
+                if bare is None:
+                    _saw_pointed(ctx, axes, block.line)
+                else:
+                    _tell_point_mix(block, ctx, axes, bare, self.in_units)
+            return True
+        if mode is None and axes:
+            mode = ctx.state.motion
+            if mode is None:
+                return False  # the general path explains the error
+        if mode is not None:
+            motion = plain_motion(others, axes, mode, arc_words)
+            if motion is None:
+                return False
+            fill_values(block.values, axes, sequence_value, others)
+            block.sections["Motion"] = motion
+            if axes:
+                if bare is None:
+                    _saw_pointed(ctx, axes, block.line)
+                else:
+                    _tell_point_mix(block, ctx, axes, bare, self.in_units)
+        elif arc_words:
+            return False  # I/J/K/R with no motion: the general path refuses it
+        else:
+            fill_values(block.values, axes, sequence_value, others)
+        if others is not None and "F" in others:
+            block.sections["Feed"] = Feed(others["F"])
+        return True
 
     def pointless(self, ctx: Context, num: str) -> float | None:
         """A point-less number's value, as ``WordBlockSyntax.build`` reads it (least input increments of the
@@ -190,16 +261,69 @@ def whole_number(num: str) -> int:
     return value
 
 
-def values_of(axes: dict[str, float | Expr], sequence: object, others: dict[str, float | Expr] | None
-              ) -> dict[str, float | int | Expr]:
-    """A plain block's ``Block.values``: its axis words', its block number's and its other words' (in that
-    order: the general path's is the words', and no reader of ``values`` depends on it)."""
-    values = cast("dict[str, object]", axes.copy())
+def span_whole(text: str, start: i64, end: i64) -> int:
+    """``whole_number`` of ``text[start:end]`` (digits only), read where it stands."""
+    size = end - start
+    if size <= 0 or size > 18:
+        return int(text[start:end])
+    value: i64 = 0
+    i = start
+    while i < end:
+        c: i64 = ord(text[i])
+        if c < 48 or c > 57:
+            return int(text[start:end])
+        value = value * 10 + (c - 48)
+        i += 1
+    return value
+
+
+def span_decimal(text: str, start: i64, end: i64) -> float | None:
+    """``decimal_value`` of ``text[start:end]`` where it has a decimal point (None where it has none), read where
+    it stands: an optional minus, digits with one point (``postproc.numbers.decimal_value``'s exact quotient,
+    which reads any other spelling, or more digits than it computes itself)."""
+    i = start
+    negative = i < end and ord(text[i]) == 45  # '-'
+    if negative:
+        i += 1
+    mantissa: i64 = 0
+    digits: i64 = 0
+    places: i64 = -1
+    while i < end:
+        c: i64 = ord(text[i])
+        if 48 <= c <= 57:
+            mantissa = mantissa * 10 + (c - 48)
+            digits += 1
+            if places >= 0:
+                places += 1
+        elif c == 46 and places < 0:  # '.'
+            places = 0
+        else:
+            return None
+        i += 1
+    if places < 0 or digits == 0:
+        return None
+    if digits > DECIMAL_DIGITS:
+        return decimal_value(text[start:end])
+    value = float(mantissa) / POWERS[places] if places > 0 else float(mantissa)
+    return -value if negative else value
+
+
+POWERS: Final[list[float]] = [1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15]
+"""Powers of ten, each exact in a float (``span_decimal``'s divisors, as ``decimal_value``'s)."""
+
+
+def fill_values(values: dict[str, float | int | Expr], axes: dict[str, float | Expr], sequence: object,
+                others: dict[str, float | Expr] | None) -> None:
+    """Fill a plain block's ``Block.values`` (empty: the lanes read a block the reader left without values): its
+    axis words', its block number's and its other words' (in that order: the general path's is the words', and no
+    reader of ``values`` depends on it). The axes first, into the empty dictionary: compiled, one C call cloning
+    their table, and no second dictionary made and dropped."""
+    filled = cast("dict[str, object]", values)
+    filled.update(axes)
     if sequence is not None:
-        values["N"] = sequence
+        filled["N"] = sequence
     if others is not None:
-        values.update(others)
-    return cast("dict[str, float | int | Expr]", values)
+        filled.update(others)
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -209,6 +333,9 @@ class PlainLatheLane(PlainLane):
     axis, an arc centre J off the ZX plane) is left to the general path, which reads or refuses it."""
 
     __slots__ = ()
+
+    def read_marked(self, block: Block, ctx: Context) -> bool:
+        return False  # the lathe's checks look at the words: ``read`` reads the block once they are made
 
     def read(self, block: Block, ctx: Context, words: list[tuple[str, str]]) -> bool:
         if SINGLE_KEY in ctx.state.extra:

@@ -27,7 +27,7 @@ from ..numbers import decimal_value
 from ..rs274.codes import g_key
 from ..rs274.ngc_block_syntax import _STATE_KEY as NO_MOTION_KEY, NgcWordBlockSyntax
 from .plain import (LETTER_ARC, LETTER_AXIS, LETTER_F, LETTER_G, LETTER_KIND, LETTER_N, MOTION_MODES,
-                    plain_motion, values_of, whole_number)
+                    plain_motion, fill_values, whole_number)
 
 _UPPER: Final = {c: c.upper() for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"}
 _FEED_MODES: Final = frozenset(("linear", "cw", "ccw"))
@@ -138,7 +138,7 @@ class NgcPlainLane(BlockLane):
                 block.sections["Motion"] = motion
             elif arc_words:
                 return False  # I/J/K/R with no motion: the general path refuses it
-            block.values = values_of(axes, sequence, others)
+            fill_values(block.values, axes, sequence, others)
             if others is not None and fed:
                 block.sections["Feed"] = Feed(others["F"])
             return True

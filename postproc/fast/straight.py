@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from typing import Final
 
-from mypy_extensions import mypyc_attr
+from mypy_extensions import i64, mypyc_attr
 
 from ..ir.expr import Expr
 from ..ir import Block, Feed, Motion, Section, Sequence
@@ -44,12 +44,24 @@ def straight_keys(sections: dict[str, Section]) -> int:
     return -1
 
 
-def _copied(number: str, value: object, read: object, most: int, every: bool) -> bool:
-    """Whether a canonical word's ``number`` (which reads as ``read``) is how a writer exact to ``most``
-    places writes ``value`` (``every``: ``most`` covers every canonical number)."""
+def _copied(text: str, start: i64, end: i64, value: object, read: object, most: int, every: bool) -> bool:
+    """Whether a canonical word's number (``text[start:end]``, which reads as ``read``) is how a writer exact to
+    ``most`` places writes ``value`` (``every``: ``most`` covers every canonical number)."""
     if type(value) is not float:
         return False
-    return read == value and (-SHORT_RANGE < value < SHORT_RANGE if every else as_written(number, value, most))
+    return read == value and (-SHORT_RANGE < value < SHORT_RANGE if every else as_written(text[start:end], value,
+                                                                                            most))
+
+
+def _word_end(text: str, at: i64, size: i64) -> i64:
+    """Where the word of a canonical line that starts at ``at`` ends: the next space, or the line's end; -1 where
+    no word starts there (the line has ended). (A loop: compiled, ``str.find`` cost ~200 instructions a word.)"""
+    if at >= size:
+        return -1
+    end = at + 1
+    while end < size and ord(text[end]) != 32:
+        end += 1
+    return end
 
 
 def _plain_arc(axes: dict[str, float | Expr], center: dict[str, float | Expr] | None, plane: str) -> bool:
@@ -223,64 +235,85 @@ class StraightLane(Lane):
             if sequence is None or count > 2:
                 feed = sections.get("Feed")
         besides = (sequence is not None) + (feed is not None)
-        words = block.words
-        at = 0
-        head = 0
+        # The words are read where they stand in the line: a canonical block's text is its words joined by single
+        # spaces (``Block.canonical``), so a block whose words the reader left unmade (``Block.marks``) is written
+        # without making them. ``at``: where the next word's letter stands; ``ends``: where that word ends.
+        size: i64 = len(text)
+        at: i64 = 0
+        head: i64 = 0
         values = block.values  # what the words read as (a reader's, untouched since: ``Block.values``)
         if sequence is not None:
             if not isinstance(sequence, Sequence):
                 return None
-            letter, number = words[0]
+            end = _word_end(text, 0, size)
             read_number = values.get("N")  # (an int: compiled, compared unboxed)
-            if letter != "N" or type(read_number) is not int or read_number != sequence.number \
-                    or number[0] == "0" and len(number) > 1:
+            if end < 0 or text[0] != "N" or type(read_number) is not int or read_number != sequence.number \
+                    or end > 2 and text[1] == "0":
                 return None  # (N010 is written N10)
-            at = 1
-            head = len(number) + 1
-        coded = at < len(words) and words[at][0] == "G"  # the block's own motion code: it is rewritten
-        if count != 1 + besides or len(words) != len(axes) + besides + arc + coded:
+            at = end + 1
+            head = end
+        coded = at < size and text[at] == "G"  # the block's own motion code: it is rewritten
+        if count != 1 + besides:
             return None
-        written = 0
+        written: i64 = 0
         if coded:
-            written = len(words[at][1]) + 1
-            at += 1
+            end = _word_end(text, at, size)
+            written = end - at
+            at = end + 1
         most = writer.exact_mm if writer.modal.units == "mm" else writer.exact_inch
         every = most >= MAX_PLACES  # every canonical number has at most MAX_PLACES: as_written is the range
         driven = self.driven
         xyz = self.drives_xyz
         for axis, value in axes.items():
-            letter, number = words[at]
-            at += 1
+            end = _word_end(text, at, size)
+            if end < 0:
+                return None
+            letter = text[at]
             if letter != axis or driven is not None and not (xyz and (letter == "X" or letter == "Y" or letter == "Z")) \
                     and letter not in driven or type(value) is not float or not (
-                    -SHORT_RANGE < value < SHORT_RANGE if every else as_written(number, value, most)):
+                    -SHORT_RANGE < value < SHORT_RANGE if every else as_written(text[at + 1:end], value, most)):
                 return None
             read = values.get(letter)  # the number the word reads as: no step changed it. (Both floats: compiled,
             if type(read) is not float or read != value:  # compared unboxed, where ``is`` boxed ``value`` anew and
                 return None  # the objects were compared: ~190 instructions a word.)
+            at = end + 1
         if arc:
             if center is not None:
                 for axis, value in center.items():
-                    letter, number = words[at]
-                    at += 1
-                    if letter != _CENTER_LETTER[axis] or not _copied(number, value, values.get(letter), most, every):
+                    end = _word_end(text, at, size)
+                    if end < 0:
                         return None
+                    letter = text[at]
+                    if letter != _CENTER_LETTER[axis] or not _copied(text, at + 1, end, value, values.get(letter),
+                                                                     most, every):
+                        return None
+                    at = end + 1
             else:
-                letter, number = words[at]
-                at += 1
-                if letter != "R" or not _copied(number, radius, values.get(letter), most, every):
+                end = _word_end(text, at, size)
+                if end < 0:
                     return None
+                letter = text[at]
+                if letter != "R" or not _copied(text, at + 1, end, radius, values.get(letter), most, every):
+                    return None
+                at = end + 1
+        rate = 0.0
         if feed is not None:
             if not isinstance(feed, Feed):
                 return None
-            rate = feed.value
-            letter, number = words[at]
-            if letter != "F" or type(rate) is not float or not (
-                    -SHORT_RANGE < rate < SHORT_RANGE if every else as_written(number, rate, most)):
+            end = _word_end(text, at, size)
+            fed = feed.value
+            if end < 0 or text[at] != "F" or type(fed) is not float:
                 return None
-            read = values.get(letter)
+            rate = fed
+            if not (-SHORT_RANGE < rate < SHORT_RANGE if every else as_written(text[at + 1:end], rate, most)):
+                return None
+            read = values.get("F")
             if type(read) is not float or read != rate:
                 return None
+            at = end + 1
+        if at != size + 1:
+            return None  # a word the sections do not account for (every word read: the line's end is passed)
+        if feed is not None:
             writer.modal.feed = rate
         if writer.after_blocks:
             writer.after_block(block)  # as ``generate`` (after the block's words: none fails from here)

@@ -7,6 +7,8 @@ from mypy_extensions import mypyc_attr
 
 from typing import TYPE_CHECKING, Any, ClassVar, Final
 
+from mypy_extensions import i64
+
 from .expr import Expr, expr_from_xml
 from ..xmlio import DEFAULT, XFactory, XmlNode, decode, encode, lxml_etree, restore_slots, slot_state, where
 from .section import Section
@@ -27,14 +29,28 @@ class Block:
     """
 
     XNAME: ClassVar[str] = "Block"
-    __slots__ = ("line", "text", "eol", "words", "values", "sections", "canonical")
+    __slots__ = ("line", "text", "eol", "_words", "_spelled", "marks", "values", "sections", "canonical")
 
     def __init__(self, line: int, text: str | None, eol: str = "\n",
-                 words: list[tuple[str, str]] | None = None) -> None:
+                 words: list[tuple[str, str]] | None = None, marks: i64 = 0) -> None:
         self.line = line
         self.text = text
         self.eol = eol
-        self.words = words if words is not None else []
+        # (statements, not conditional expressions: compiled, ``marks if .. else 0`` boxed the i64 and unboxed it)
+        self._words: list[tuple[str, str]] | None = words
+        self._spelled: str | None = None
+        """The canonical line ``marks`` point into, until its words are made (``words``)."""
+        self.marks: i64 = 0
+        if words is None:
+            if marks:
+                self._spelled = text
+                self.marks = marks
+            else:
+                self._words = []
+        """A reader's words not made yet (0: made, ``words`` holds them): where the letters of a canonical line
+        (``text``, as read) stand, packed by ``postproc.rs274.canonical_line.scan_marks``. A step that reads the
+        block from them (the plain-block lane) makes no word objects; reading ``words`` makes them (the same
+        words as the reader's scan) and clears it. Not part of the block's value."""
         self.values: dict[str, float | int | Expr] = {}
         """Address -> what its word reads as (the reader's and block syntax's; no later step changes it,
         so a writer that copies a canonical word checks the section's value against it)."""
@@ -44,6 +60,29 @@ class Block:
         spelling (``postproc.numbers``), so a writer may copy it (``WordWriter.straight_move``); whatever
         takes words out of such a block (a call's words into its section) clears it. Not part of the
         block's value (equality, XML)."""
+
+    @property
+    def words(self) -> list[tuple[str, str]]:
+        """(letter, number text) pairs as written, made at the first reading where the reader left ``marks``
+        (a canonical line's words, which most blocks of a long program are never asked for)."""
+        words = self._words
+        if words is None:
+            spelled = self._spelled
+            words = self._words = marked_words(spelled if spelled is not None else "", self.marks)
+            self._spelled = None
+            self.marks = 0
+        return words
+
+    @words.setter
+    def words(self, words: list[tuple[str, str]]) -> None:
+        self._words = words
+        self._spelled = None
+        self.marks = 0
+
+    def spelled(self) -> str:
+        """The line ``marks`` point into (the reader's ``text``; "" once the words are made)."""
+        spelled = self._spelled
+        return spelled if spelled is not None else ""
 
     def add(self, section: Section) -> Section:
         self.sections[section.KEY] = section
@@ -126,6 +165,30 @@ class Block:
 
 _EOLS: Final = {"\n": "LF", "\r\n": "CRLF", "\r": "CR", "": "none"}
 _EOLS_BACK: Final = {v: k for k, v in _EOLS.items()}
+
+
+def marked_words(text: str, marks: i64) -> list[tuple[str, str]]:
+    """The words of a canonical line from where its letters stand (``marks``: the count in the low
+    ``MARK_BITS``, then each letter's position in ``MARK_BITS`` bits): the letter, then its number up to the
+    space before the next letter or the end of the line (``canonical_line.scan_marks`` packs them)."""
+    count = marks & MARK_MASK
+    words: list[tuple[str, str]] = []
+    rest = marks >> MARK_BITS
+    i: i64 = 0
+    while i < count:
+        at = rest & MARK_MASK
+        rest = rest >> MARK_BITS
+        end = (rest & MARK_MASK) - 1 if i + 1 < count else len(text)
+        words.append((text[at], text[at + 1:end]))
+        i += 1
+    return words
+
+
+MARK_BITS: Final = 8
+"""Bits a position (and the count) takes in a block's ``marks``: a line of at most 255 characters."""
+MARK_MASK: Final = (1 << MARK_BITS) - 1
+MARK_WORDS: Final = 6
+"""The most words ``marks`` holds (seven fields of eight bits: a short int, compiled, never a boxed one)."""
 
 
 def encode_eol(eol: str) -> str:

@@ -117,6 +117,10 @@ class WordBlockSyntax(Syntax):
         return self.CODES
 
     def build(self, block: Block, ctx: Context) -> None:
+        if block.marks:  # a canonical line whose words the reader left unmade: the lane reads it from its line
+            lane = ctx.block_lane
+            if lane is not None and lane.read_marked(block, ctx):
+                return
         words = block.words
         if not words:
             return

@@ -16,6 +16,8 @@ from typing import Final
 
 from mypy_extensions import i64
 
+from ..ir.block import MARK_BITS, MARK_MASK, MARK_WORDS
+
 CANONICAL: Final = 1
 """The bit of ``scan_words``'s answer for a canonical line (``CANONICAL_BLOCK``): upper-case words separated by
 single spaces, a code letter and digits, an axis-type letter and ``-?(0|[1-9][0-9]*)\\.`` with at most six
@@ -52,10 +54,28 @@ def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
     blanks left out) and the number of its block number when its first word is an N with digits only (else
     -1), from one pass: a canonical line needs no split, and its block number no second parse.
     ``NO_WORDS`` when the kind is 0."""
+    kind, words, sequence, _ = _scan(text, True)
+    return kind, words, sequence
+
+
+def scan_marks(text: str) -> tuple[int, list[tuple[str, str]], int, i64]:
+    """``scan_words``'s reading of the line, from the same pass, with the words of a canonical line of at most
+    ``MARK_WORDS`` words and 255 characters left unmade: their letters' places packed as ``Block.marks`` holds
+    them (``postproc.ir.block.marked_words`` makes the same words from them), and ``NO_WORDS`` in their place.
+    Any other line's words come made, with 0 marks."""
+    kind, words, sequence, marks = _scan(text, False)
+    if kind and not marks:
+        kind, words, sequence, _ = _scan(text, True)  # (a line not canonical, or too long to mark: the words)
+    return kind, words, sequence, marks
+
+
+def _scan(text: str, keep: bool) -> tuple[int, list[tuple[str, str]], int, i64]:
+    """The scan (``scan_words``); ``keep`` False: the words' letters' places packed (the fourth answer, or 0
+    where they do not fit or the line is not canonical) instead of the words made."""
     try:
         b = text.encode("ascii")  # compiled, a C call; ``str.isascii`` would be a method look-up
     except UnicodeEncodeError:
-        return 0, NO_WORDS, -1
+        return 0, NO_WORDS, -1, 0
     # Positions as i64 (compiled: machine integers, not tagged ones whose every step checks for overflow);
     # each byte read once into a local, digits and blanks told by comparisons (a table look-up is a second
     # index, with its own checks).
@@ -64,7 +84,9 @@ def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
     letters = _LETTERS
     canonical = True
     kind = WORDS
-    words: list[tuple[str, str]] = []
+    words: list[tuple[str, str]] = [] if keep else NO_WORDS
+    count: i64 = 0  # words met
+    marks: i64 = 0  # their letters' places (``keep`` False), from bit MARK_BITS up
     sequence = -1
     i: i64 = 0
     while i < n and (b[i] == 32 or b[i] == 9):  # ' ', '\t'
@@ -76,12 +98,12 @@ def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
         k = table[c]
         if k < _AXIS:
             if c != 59:  # ';'
-                return 0, NO_WORDS, -1
+                return 0, NO_WORDS, -1, 0
             i += 1
             while i < n and (b[i] == 32 or b[i] == 9):
                 i += 1
             if i != n:
-                return 0, NO_WORDS, -1
+                return 0, NO_WORDS, -1, 0
             canonical = False  # ';': the end of block, written out
             break
         i += 1
@@ -97,7 +119,7 @@ def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
             if sign == 43 or k != _AXIS:  # '+1.', 'T-1': plain, not canonical
                 canonical = False
         digits = i
-        first_n = (c == 78 or c == 110) and not words  # 'N', 'n' first: its number is the block's
+        first_n = (c == 78 or c == 110) and count == 0  # 'N', 'n' first: its number is the block's
         if first_n:
             sequence = 0
             while i < n and 48 <= b[i] <= 57:
@@ -116,7 +138,7 @@ def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
             places = i - fraction
             if whole == 0:
                 if places == 0:  # 'X.' is no number
-                    return 0, NO_WORDS, -1
+                    return 0, NO_WORDS, -1, 0
                 canonical = False  # '.5'
             elif (k != _AXIS or whole > 1 and b[digits] == 48 or places > _MAX_FRACTION
                   or places > 0 and b[i - 1] == 48
@@ -124,7 +146,7 @@ def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
                 canonical = False  # 'G1.5', '00.5', more than six places, '0.10', '-0.'
         else:
             if whole == 0:  # a letter without a number
-                return 0, NO_WORDS, -1
+                return 0, NO_WORDS, -1, 0
             if k != _CODE:
                 canonical = False  # 'X10': no point
         if c == 71 or c == 77 or c == 103 or c == 109:  # 'G', 'M', 'g', 'm'
@@ -133,9 +155,13 @@ def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
             if point or signed:
                 kind |= LEXED  # 'N10.', 'N-1': the lexer's to judge
                 sequence = -1
-        elif (c == 79 or c == 111) and not words:  # 'O', 'o' first: a program number, the lexer's
+        elif (c == 79 or c == 111) and count == 0:  # 'O', 'o' first: a program number, the lexer's
             kind |= LEXED
-        words.append((letters[c], text[start:i]))
+        if keep:
+            words.append((letters[c], text[start:i]))
+        elif count < MARK_WORDS:
+            marks |= (start - 1) << (MARK_BITS * (count + 1))  # (a canonical word's letter stands just before)
+        count += 1
         if i == n:
             break
         c = b[i]
@@ -151,11 +177,13 @@ def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
             canonical = False
             continue
         elif c != 9:
-            return 0, NO_WORDS, -1
+            return 0, NO_WORDS, -1, 0
         canonical = False  # canonical: one space between words, no tab
         while i < n and (b[i] == 32 or b[i] == 9):
             i += 1
         if i == n:
             break
         c = b[i]
-    return (kind | CANONICAL if canonical else kind), words, sequence
+    if keep or not canonical or count > MARK_WORDS or n > MARK_MASK:
+        return (kind | CANONICAL if canonical else kind), words, sequence, 0
+    return kind | CANONICAL, words, sequence, marks | count
