@@ -14,19 +14,23 @@ blocks one at a time. ``lower_for`` runs consecutive ``BlockStep``s as one loop 
 (``run_blocks``) instead of a generator per step, and a block that is only a plain move (``plain_move``: a move
 that is no reference return, and at most its block number; most blocks of a CAM program) skips every step whose
 ``moves`` says such a block is not its business there: a step costs a few instructions on it instead of a
-generator's resumption (~150-250 compiled, issue 30). Both forms compute the same: a ``LoweringStep`` called as
-a function runs its ``BlockStep`` alone through the same loop.
+generator's resumption (~150-250 compiled, issue 30). A step that only follows where such a move takes the
+program while it has nothing else to do (the frame evaluation, the tool length timing, the arc pass) says so
+with its ``point``: the loop reads a straight move of X, Y and Z numbers once for every such step and notes it in
+each one's point (``move_words.NotedPoint``), without calling the step. Both forms compute the same: a
+``LoweringStep`` called as a function runs its ``BlockStep`` alone through the same loop.
 """
 
 from __future__ import annotations
 
-from typing import Callable, Iterator, Sequence
+from typing import Callable, Final, Iterator, Sequence
 
 from mypy_extensions import mypyc_attr
 
 from ..context import Context
 from ..dialect import Dialect
 from ..ir import Block, Motion, Section
+from .move_words import OTHER, NotedPoint
 
 Lowering = Callable[[Iterator[Block], Context, type[Dialect]], Iterator[Block]]
 """A lowering step: ``step(blocks, ctx, target)`` -> blocks, a pure block-stream transform."""
@@ -51,6 +55,11 @@ class BlockStep:
     def __init__(self) -> None:
         self.moves = True
         """A block that is only a move is this step's business (False: it goes past unseen)."""
+        self.point: NotedPoint | None = None
+        """Set (while ``moves``): a block that is only a straight move (rapid or linear) of X, Y and Z numbers
+        (``MoveWords.read``) would only be noted here by ``take_move``, so the loop notes it (``NotedPoint.note``)
+        instead of calling the step. The step sets it, and clears it where such a move would do more, in its own
+        ``take``, ``take_move`` or ``finish`` (the loop looks at it at each move)."""
 
     def take(self, block: Block) -> list[Block] | None:
         raise NotImplementedError
@@ -79,19 +88,24 @@ def plain_move(sections: dict[str, Section]) -> bool:
     """The block holds a move (``Motion``) that is no reference return and at most a ``Sequence`` (block number)
     besides: a step that watches neither key has nothing to look for in it but the move. A reference return
     (G28/G30, ``Motion('home')``) goes the general way (``take``): a step that follows only where the tool is taken
-    home (``measured_entries``) skips the rest. Most blocks of a CAM program; the loop asks it once a block
-    (``Walk.through``)."""
+    home (``measured_entries``) skips the rest. Most blocks of a CAM program."""
+    return plain_motion(sections) is not None
+
+
+def plain_motion(sections: dict[str, Section]) -> Motion | None:
+    """The move of a block that is only a plain move (``plain_move``), else None: the loop asks it once a block
+    (``Walk.through``), and notes the move it gives (``BlockStep.point``)."""
     size = len(sections)
     if size == 2:
         if "Sequence" not in sections:
-            return False
+            return None
     elif size != 1:
-        return False
+        return None
     motion = sections.get("Motion")
     if not isinstance(motion, Motion):
-        return False
+        return None
     mode = motion.mode
-    return mode != "home" and mode != "home2"
+    return motion if mode != "home" and mode != "home2" else None
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -161,23 +175,40 @@ class Walk:
     def through(self, block: Block, start: int) -> Block | None:
         """``block`` through the steps from ``start`` on: the block that comes out of the last, or None where a
         step gave several blocks or none (``made``, to go on from step ``at``: ``given``). A block that is only
-        a plain move (``plain_move``, asked once, and again for a block a step gave) skips a step whose ``moves`` is
-        False and goes to the others' ``take_move``, which gives it back as ``[block]`` where it changed it in
-        place into more (``still_moving``: a later step must not skip it, nor take it as only a move)."""
+        a plain move (``plain_motion``, asked once, and again for a block a step gave) skips a step whose ``moves``
+        is False; a straight move of X, Y and Z numbers is noted in the ``point`` of a step that has one (read once,
+        ``MoveWords.read``); the other steps get it through ``take_move``, which gives it back as ``[block]`` where
+        it changed it in place into more (``still_moving``: a later step must not skip it, nor take it as only a
+        move). A ``take_move`` that gives None may still have put another move in the block: the next note reads
+        the block's move again."""
         steps = self.steps
         n = len(steps)
-        plain = plain_move(block.sections)
+        motion = plain_motion(block.sections)
+        bits = UNREAD
         i = start
         while i < n:
-            if plain:
+            if motion is not None:
                 i = self.next_move[i]
                 if i == n:
                     break
                 step = steps[i]
                 i += 1
+                point = step.point
+                if point is not None:
+                    if bits == UNREAD:
+                        bits = _straight(motion, point)
+                    elif bits == STALE:
+                        motion = block.sections["Motion"]  # type: ignore[assignment]  # (still only a move)
+                        bits = _straight(motion, point)
+                    if bits >= 0:
+                        point.note(point.words, bits)
+                        continue
                 out = step.take_move(block)
                 if not step.moves:
                     self.marked()
+                if out is None:
+                    bits = STALE
+                    continue
             else:
                 step = steps[i]
                 i += 1
@@ -189,7 +220,8 @@ class Walk:
                 continue
             if len(out) == 1:
                 block = out[0]
-                plain = plain_move(block.sections)
+                motion = plain_motion(block.sections)
+                bits = UNREAD
                 continue
             self.made = out
             self.at = i
@@ -219,6 +251,21 @@ class Walk:
             self.marked()
             for held in held_blocks:
                 yield from self.onward(held, k + 1)
+
+
+UNREAD: Final = -2
+"""``Walk.through``: the block's move is not read yet."""
+STALE: Final = -3
+"""``Walk.through``: a step's ``take_move`` went by since the move was read (it may have put another in the block)."""
+
+
+def _straight(motion: Motion, point: NotedPoint) -> int:
+    """What the loop notes of a plain move: the bits of its X, Y and Z numbers read by ``point``'s reader where it is
+    a straight move (``OTHER``: an arc, or other words, go to the step's ``take_move``)."""
+    mode = motion.mode
+    if mode == "linear" or mode == "rapid":
+        return point.words.read(motion)
+    return OTHER
 
 
 def register_transform(transform: Lowering) -> Lowering:
