@@ -220,6 +220,13 @@ class _Notes(_MoveLog):
 
     def take_move(self, block: Block) -> list[Block] | None:
         self.seen.append(f"{self.name}-move:{block.text}")
+        return self._follow(block)
+
+    def take(self, block: Block) -> list[Block] | None:
+        self.seen.append(f"{self.name}:{block.text}")
+        return self._follow(block)
+
+    def _follow(self, block: Block) -> list[Block] | None:
         motion = block.sections["Motion"]
         assert isinstance(motion, Motion)
         words = self.notes.words
@@ -275,9 +282,10 @@ def test_a_straight_move_is_noted_in_a_steps_point_without_calling_it() -> None:
     assert a.settled() == b.settled() == {"X": 5.0, "Y": 4.0, "Z": -1.0, "A": 90.0}
 
 
-def test_a_move_another_step_put_in_the_block_is_the_one_noted_after_it() -> None:
-    """A step between two points puts another move in the block (``X`` + 100) and gives None: the point before it
-    notes the move as it came, the one after it the new one (the loop reads the block's move again)."""
+def test_a_move_another_step_put_in_the_block_is_the_one_the_later_steps_see() -> None:
+    """A step between two points puts another move in the block (``X`` + 100), its ``take`` giving None: its
+    ``take_move`` (``BlockStep``'s) gives the block back as ``[block]`` (``still_moving``), so the point before it
+    has the move as it came, the point after it the new one (the loop reads the block again)."""
     seen: list[str] = []
     a = _Notes("a", seen)
     m = _Moves("m", seen, moved="p2")

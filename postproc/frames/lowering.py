@@ -170,8 +170,8 @@ class FrameEvaluator(BlockStep):
         compiled): with no frame, in absolute millimetres, the position follows its words (a move of X, Y and Z
         numbers only noted, ``FrameRun.settle``: read once for the steps that follow the point, ``move_words``;
         a straight one the loop notes itself while ``point`` is set); else ``take``."""
+        m = block.sections["Motion"]
         if self.frame is None and self.plain_mm:
-            m = block.sections["Motion"]
             if isinstance(m, Motion) and moving(m.mode) and not self.ctx.state.symbolic:
                 reached = self.reached
                 words = self.words
@@ -188,7 +188,7 @@ class FrameEvaluator(BlockStep):
                     self.targets(block.sections)
                 self.follow()
                 return None
-        return still_moving(block, self.take(block))
+        return still_moving(block, self.take(block), m, m.axes if isinstance(m, Motion) else None)  # (a frame carries it)
 
     # -- one block ---------------------------------------------------------------------------------
     def block(self, block: Block) -> None:

@@ -255,8 +255,9 @@ class _Complete(BlockStep):
         point here; else a waiting change may be put on it (``still_moving``)."""
         if self.pending is None:
             out = self._take(block, True)
-        else:
-            out = still_moving(block, self._take(block, True))
+        else:  # (the move may get the Z the change needs: other words)
+            motion = block.sections["Motion"]
+            out = still_moving(block, self._take(block, True), motion, motion.axes if isinstance(motion, Motion) else None)
         self.follow()
         return out
 

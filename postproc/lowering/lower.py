@@ -30,6 +30,7 @@ from mypy_extensions import mypyc_attr
 from ..context import Context
 from ..dialect import Dialect
 from ..ir import Block, Motion, Section
+from ..ir.expr import Expr
 from .move_words import OTHER, NotedPoint
 
 Lowering = Callable[[Iterator[Block], Context, type[Dialect]], Iterator[Block]]
@@ -67,20 +68,26 @@ class BlockStep:
     def take_move(self, block: Block) -> list[Block] | None:
         """``take`` for a block that is only a plain move (``plain_move``, asked by the loop: a step that follows
         every move overrides this to skip asking its own block again: its ``Motion`` is no reference return); the
-        same result as ``take``, except that None means the block is still only a move: one ``take`` changed in
-        place into more (a length change put on it) comes back as ``[block]``, so the steps after it see what it
-        is (``still_moving``)."""
-        return still_moving(block, self.take(block))
+        same result as ``take``, except that None means the block is still only the move it was given (the same
+        ``Motion``, with the same words: the loop notes what it read of it in the later steps' ``point``): one
+        ``take`` changed in place into more (a length change put on it), or into another move (a frame's), comes
+        back as ``[block]``, so the steps after it see what it is (``still_moving``)."""
+        motion = block.sections.get("Motion")
+        return still_moving(block, self.take(block), motion, motion.axes if isinstance(motion, Motion) else None)
 
     def finish(self) -> list[Block]:
         return []
 
 
-def still_moving(block: Block, out: list[Block] | None) -> list[Block] | None:
+def still_moving(block: Block, out: list[Block] | None, motion: Section | None = None,
+                 axes: dict[str, float | Expr] | None = None) -> list[Block] | None:
     """``out``, what a step's ``take`` gave for ``block``, a block that was only a plain move, as ``take_move`` gives
-    it: ``[block]`` where ``take`` changed the block in place so that it is no longer only a plain move."""
-    if out is None and not plain_move(block.sections):
-        return [block]
+    it: ``[block]`` where ``take`` changed the block in place so that it is no longer only a plain move, or (given
+    the ``motion`` it had and that motion's ``axes``) no longer that move with those words."""
+    if out is None:
+        now = plain_motion(block.sections)
+        if now is None or motion is not None and (now is not motion or now.axes is not axes):
+            return [block]
     return out
 
 
@@ -94,14 +101,16 @@ def plain_move(sections: dict[str, Section]) -> bool:
 
 def plain_motion(sections: dict[str, Section]) -> Motion | None:
     """The move of a block that is only a plain move (``plain_move``), else None: the loop asks it once a block
-    (``Walk.through``), and notes the move it gives (``BlockStep.point``)."""
-    size = len(sections)
-    if size == 2:
-        if "Sequence" not in sections:
-            return None
-    elif size != 1:
+    (``Walk.through``), and notes the move it gives (``BlockStep.point``). One pass over the block's one or two
+    sections (compiled, two items cost about half of a key test and a look-up)."""
+    if len(sections) > 2:
         return None
-    motion = sections.get("Motion")
+    motion: Section | None = None
+    for key, section in sections.items():
+        if key == "Motion":
+            motion = section
+        elif key != "Sequence":
+            return None
     if not isinstance(motion, Motion):
         return None
     mode = motion.mode
@@ -179,8 +188,7 @@ class Walk:
         is False; a straight move of X, Y and Z numbers is noted in the ``point`` of a step that has one (read once,
         ``MoveWords.read``); the other steps get it through ``take_move``, which gives it back as ``[block]`` where
         it changed it in place into more (``still_moving``: a later step must not skip it, nor take it as only a
-        move). A ``take_move`` that gives None may still have put another move in the block: the next note reads
-        the block's move again."""
+        move, nor note it: a ``take_move`` that gives None leaves the move it was given, ``BlockStep.take_move``)."""
         steps = self.steps
         n = len(steps)
         motion = plain_motion(block.sections)
@@ -197,18 +205,12 @@ class Walk:
                 if point is not None:
                     if bits == UNREAD:
                         bits = _straight(motion, point)
-                    elif bits == STALE:
-                        motion = block.sections["Motion"]  # type: ignore[assignment]  # (still only a move)
-                        bits = _straight(motion, point)
                     if bits >= 0:
                         point.note(point.words, bits)
                         continue
-                out = step.take_move(block)
+                out = step.take_move(block)  # (None: still this move, with these words)
                 if not step.moves:
                     self.marked()
-                if out is None:
-                    bits = STALE
-                    continue
             else:
                 step = steps[i]
                 i += 1
@@ -255,8 +257,6 @@ class Walk:
 
 UNREAD: Final = -2
 """``Walk.through``: the block's move is not read yet."""
-STALE: Final = -3
-"""``Walk.through``: a step's ``take_move`` went by since the move was read (it may have put another in the block)."""
 
 
 def _straight(motion: Motion, point: NotedPoint) -> int:
