@@ -195,6 +195,32 @@ def test_a_step_that_stops_and_starts_following_moves_is_skipped_only_between() 
                     "a:end", "n:end", "c:end"]
 
 
+class _Done(_Log):
+    """A ``_Log`` whose work is over at the block named ``last`` (``passes``, as the feed check's at the first feed)."""
+
+    def __init__(self, name: str, seen: list[str], last: str) -> None:
+        super().__init__(name, seen)
+        self.last = last
+
+    def take(self, block: Block) -> list[Block] | None:
+        if block.text == self.last:
+            self.moves = False
+            self.passes = True
+        return super().take(block)
+
+
+def test_a_step_whose_work_is_over_sees_no_block_but_still_finishes() -> None:
+    """By hand: ``a`` sees p1 and x (its last), then neither the plain move p2 nor the block y; ``c`` sees all;
+    both finish."""
+    seen: list[str] = []
+    a = _Done("a", seen, last="x")
+    c = _Log("c", seen)
+    names = [("p1", True), ("x", False), ("p2", True), ("y", False)]
+    out = _texts(run_blocks(iter([_block(name, plain) for name, plain in names]), [a, c]))
+    assert out == ["p1", "x", "p2", "y"]
+    assert seen == ["a:p1", "c:p1", "a:x", "c:x", "c:p2", "c:y", "a:end", "c:end"]
+
+
 def test_steps_run_as_one_step_as_they_run_in_the_loop() -> None:
     blocks = [("a", False), ("b", True), ("c", False), ("d", True)]
     alone: list[str] = []

@@ -61,6 +61,11 @@ class BlockStep:
         (``MoveWords.read``) would only be noted here by ``take_move``, so the loop notes it (``NotedPoint.note``)
         instead of calling the step. The step sets it, and clears it where such a move would do more, in its own
         ``take``, ``take_move`` or ``finish`` (the loop looks at it at each move)."""
+        self.passes = False
+        """The step's work is over: no block is its business any more (it gives none of them back changed, holds
+        none, follows nothing), so every block goes past it unseen, plain move or not; ``finish`` is still
+        called. Set in its own ``take``, ``take_move`` or ``finish``, for good (a step of a program's start:
+        ``units_at_start``, the feed check, the title of the opening ``%`` line)."""
 
     def take(self, block: Block) -> list[Block] | None:
         raise NotImplementedError
@@ -147,6 +152,7 @@ class Steps(BlockStep):
         one = walk.through(block, 0)
         made = [one] if one is not None else list(walk.given())
         self.moves = any(step.moves for step in self.steps)
+        self.passes = all(step.passes for step in self.steps)
         return None if len(made) == 1 and made[0] is block else made
 
     def finish(self) -> list[Block]:
@@ -170,16 +176,24 @@ class Walk:
         """``next_move[i]``: the first step from ``i`` on whose ``moves`` is True (``len(steps)``: none). A block
         that is only a move goes from one such step to the next: most steps of a translation pass such blocks,
         and looking at each of them cost ~50 instructions a step a block compiled (17 of 21 to LinuxCNC)."""
+        self.next_take: list[int] = []
+        """``next_take[i]``: the first step from ``i`` on whose work is not over (``passes`` False): the other
+        blocks go from one such step to the next."""
         self.marked()
 
     def marked(self) -> None:
-        """``next_move`` anew: a step's ``moves`` changed (which a step does in its own calls only)."""
+        """``next_move`` and ``next_take`` anew: a step's ``moves`` or ``passes`` changed (which a step does in its
+        own calls only)."""
         steps = self.steps
         n = len(steps)
         found = [n] * (n + 1)
+        taking = [n] * (n + 1)
         for k in range(n - 1, -1, -1):
-            found[k] = k if steps[k].moves else found[k + 1]
+            step = steps[k]
+            found[k] = k if step.moves and not step.passes else found[k + 1]
+            taking[k] = taking[k + 1] if step.passes else k
         self.next_move = found
+        self.next_take = taking
 
     def through(self, block: Block, start: int) -> Block | None:
         """``block`` through the steps from ``start`` on: the block that comes out of the last, or None where a
@@ -209,14 +223,17 @@ class Walk:
                         point.note(point.words, bits)
                         continue
                 out = step.take_move(block)  # (None: still this move, with these words)
-                if not step.moves:
+                if not step.moves or step.passes:
                     self.marked()
             else:
+                i = self.next_take[i]
+                if i == n:
+                    break
                 step = steps[i]
                 i += 1
                 moves = step.moves
                 out = step.take(block)
-                if step.moves != moves:
+                if step.moves != moves or step.passes:
                     self.marked()
             if out is None:
                 continue
