@@ -390,12 +390,13 @@ _STRAIGHT = st.builds(lambda g, axes: f"{g} " + " ".join(axes), st.sampled_from(
                       st.lists(st.tuples(st.sampled_from("XYZ"), _NUMBER).map("".join), min_size=1, max_size=3,
                                unique_by=lambda w: w[0]))
 _OTHER = st.sampled_from(["G91", "G90", "G20", "G21", "G43 H1", "G49", "G52 X5. Y-2.", "G52 X0 Y0", "G68 X0 Y0 R30.",
-                          "G69", "G02 X1. Y1. R5.", "G03 X0. Y0. I-1. J0.", "G01 A15.", "G01 X1 Y2", "F900.",
+                          "G69", "G02 I5. J0.", "G03 I-1. J0.", "G01 A15.", "G01 X1 Y2", "F900.",
                           "G41 D1 G01 X10. Y0.", "G40 G01 X0. Y0.", "M03 S1000", "G28 Z0.", "G53 G00 Z0.", "G91 G28 Z0."])
 _READERS = st.sampled_from(["G43 H1\nX3. Y4.", "G49\nG43 H2\nG00 X1.", "G68 X0 Y0 R30.\nX2. Y3.\nX7.\nG69",
-                            "G52 X5.\nY4.\nG52 X0", "G02 X3. R5.", "G03 Y2. R1.", "G02 X0. Y0. R10."])
+                            "G52 X5.\nY4.\nG52 X0", "G02 I2. J2.", "G03 I0. J-3."])
 """Blocks that read the point the moves before them noted: a length change put on the next move (its Z), an
-omitted axis under a rotation or a local offset, an arc's start."""
+omitted axis under a rotation or a local offset, an arc's start (full circles: an R arc between random points
+could be no arc, which the controller checks of the suite refuse)."""
 
 
 def plain_moves() -> st.SearchStrategy[str]:
