@@ -26,8 +26,11 @@ from postproc.errors import Diagnostics, ErrorList, PostprocError
 from postproc.ir import Block, Comments, Motion, Sequence as SequenceSection
 from postproc.lowering import lower
 from postproc.lowering.lower import BlockStep, Lowering, LoweringStep, Steps, run_blocks
+from postproc.lowering.move_words import MoveWords, NotedPoint
 
+from postproc.setup.machine_setup import MachineSetup
 from tests.support.fuzzing import programs, setups
+from tests.support.tools import with_tools
 
 ROOT = Path(__file__).resolve().parent
 
@@ -192,6 +195,32 @@ def test_a_step_that_stops_and_starts_following_moves_is_skipped_only_between() 
                     "a:end", "n:end", "c:end"]
 
 
+class _Done(_Log):
+    """A ``_Log`` whose work is over at the block named ``last`` (``passes``, as the feed check's at the first feed)."""
+
+    def __init__(self, name: str, seen: list[str], last: str) -> None:
+        super().__init__(name, seen)
+        self.last = last
+
+    def take(self, block: Block) -> list[Block] | None:
+        if block.text == self.last:
+            self.moves = False
+            self.passes = True
+        return super().take(block)
+
+
+def test_a_step_whose_work_is_over_sees_no_block_but_still_finishes() -> None:
+    """By hand: ``a`` sees p1 and x (its last), then neither the plain move p2 nor the block y; ``c`` sees all;
+    both finish."""
+    seen: list[str] = []
+    a = _Done("a", seen, last="x")
+    c = _Log("c", seen)
+    names = [("p1", True), ("x", False), ("p2", True), ("y", False)]
+    out = _texts(run_blocks(iter([_block(name, plain) for name, plain in names]), [a, c]))
+    assert out == ["p1", "x", "p2", "y"]
+    assert seen == ["a:p1", "c:p1", "a:x", "c:x", "c:p2", "c:y", "a:end", "c:end"]
+
+
 def test_steps_run_as_one_step_as_they_run_in_the_loop() -> None:
     blocks = [("a", False), ("b", True), ("c", False), ("d", True)]
     alone: list[str] = []
@@ -202,6 +231,96 @@ def test_steps_run_as_one_step_as_they_run_in_the_loop() -> None:
                                    [Steps([_Log("a", inside, twice="c", hold="a"), _Log("b", inside, moves=False)])]))
     assert out_inside == out_alone == ["a", "b", "c", "c'", "d"]
     assert inside == alone == ["a:a", "a:b", "b:a", "a:c", "b:c", "b:c'", "a:d", "a:end", "b:end"]
+
+
+class _Notes(_MoveLog):
+    """A ``_MoveLog`` that follows the point of straight moves as the frame evaluation does: its ``take_move`` notes a
+    straight move of X, Y and Z numbers in its ``point`` (and logs the call), which the loop does itself while the
+    point is set (``following``)."""
+
+    def __init__(self, name: str, seen: list[str], following: bool = True) -> None:
+        super().__init__(name, seen)
+        self.notes = NotedPoint(MoveWords())
+        self.point = self.notes if following else None
+        self.position: dict[str, float | None] = {}
+
+    def take_move(self, block: Block) -> list[Block] | None:
+        self.seen.append(f"{self.name}-move:{block.text}")
+        return self._follow(block)
+
+    def take(self, block: Block) -> list[Block] | None:
+        self.seen.append(f"{self.name}:{block.text}")
+        return self._follow(block)
+
+    def _follow(self, block: Block) -> list[Block] | None:
+        motion = block.sections["Motion"]
+        assert isinstance(motion, Motion)
+        words = self.notes.words
+        bits = words.read(motion) if motion.mode in ("linear", "rapid") else -1
+        if bits >= 0:
+            self.notes.note(words, bits)
+        else:
+            self.notes.into(self.position)
+            self.position.update(motion.axes)  # type: ignore[arg-type]
+        return None
+
+    def settled(self) -> dict[str, float | None]:
+        self.notes.into(self.position)
+        return self.position
+
+
+class _Moves(_Log):
+    """A ``_Log`` that puts another straight move in the block named ``moved`` (``X`` + 100), in place, and gives
+    None (still only a move), as a frame under a rotation carries a move."""
+
+    def __init__(self, name: str, seen: list[str], moved: str) -> None:
+        super().__init__(name, seen)
+        self.moved = moved
+
+    def take(self, block: Block) -> list[Block] | None:
+        self.seen.append(f"{self.name}:{block.text}")
+        if block.text == self.moved:
+            motion = block.sections["Motion"]
+            assert isinstance(motion, Motion)
+            block.sections["Motion"] = Motion(motion.mode, {a: float(v) + 100.0 for a, v in motion.axes.items()})  # type: ignore[arg-type]
+        return None
+
+
+def _move(name: str, mode: str, **axes: float) -> Block:
+    block = Block(len(name), name, "\n")
+    block.sections = {"Motion": Motion(mode, dict(axes))}
+    return block
+
+
+def test_a_straight_move_is_noted_in_a_steps_point_without_calling_it() -> None:
+    """By hand: ``a`` (a point) and ``b`` (none) follow the same moves; the loop notes p1 and p2 (straight, X, Y and Z
+    numbers) in ``a``'s point and calls ``a`` for the arc and for the move with another axis; both end where the
+    last move put them."""
+    seen: list[str] = []
+    a = _Notes("a", seen)
+    b = _Notes("b", seen, following=False)
+    blocks = [_move("p1", "rapid", X=1.0, Y=2.0), _move("arc", "cw", X=3.0, Y=4.0), _move("p2", "linear", Z=-1.0),
+              _move("other", "linear", A=90.0), _move("p3", "linear", X=5.0)]
+    out = _texts(run_blocks(iter(blocks), [a, b]))
+    assert out == ["p1", "arc", "p2", "other", "p3"]
+    assert seen == ["b-move:p1", "a-move:arc", "b-move:arc", "b-move:p2", "a-move:other", "b-move:other", "b-move:p3",
+                    "a:end", "b:end"]
+    assert a.settled() == b.settled() == {"X": 5.0, "Y": 4.0, "Z": -1.0, "A": 90.0}
+
+
+def test_a_move_another_step_put_in_the_block_is_the_one_the_later_steps_see() -> None:
+    """A step between two points puts another move in the block (``X`` + 100), its ``take`` giving None: its
+    ``take_move`` (``BlockStep``'s) gives the block back as ``[block]`` (``still_moving``), so the point before it
+    has the move as it came, the point after it the new one (the loop reads the block again)."""
+    seen: list[str] = []
+    a = _Notes("a", seen)
+    m = _Moves("m", seen, moved="p2")
+    c = _Notes("c", seen)
+    out = _texts(run_blocks(iter([_move("p1", "linear", X=1.0), _move("p2", "linear", X=2.0, Y=3.0)]), [a, m, c]))
+    assert out == ["p1", "p2"]
+    assert seen == ["m:p1", "m:p2", "a:end", "m:end", "c:end"]
+    assert a.settled() == {"X": 2.0, "Y": 3.0}
+    assert c.settled() == {"X": 102.0, "Y": 103.0}
 
 
 # -- translations: the loop against the steps chained one by one -------------------------------------------
@@ -264,6 +383,41 @@ TARGETS = ["linuxcnc", "grbl", "grblhal", "isg", "fagor", "fanuc", "mach3"]
 def test_random_programs_translate_as_through_the_chained_steps(program: str, setup: object, source: str,
                                                                  target: str, warn: bool) -> None:
     _both(program, source, target, setup, warn)
+
+
+_NUMBER = st.integers(-400, 400).map(lambda n: f"{n / 4:.2f}")
+_STRAIGHT = st.builds(lambda g, axes: f"{g} " + " ".join(axes), st.sampled_from(["", "", "G01", "G00"]),
+                      st.lists(st.tuples(st.sampled_from("XYZ"), _NUMBER).map("".join), min_size=1, max_size=3,
+                               unique_by=lambda w: w[0]))
+_OTHER = st.sampled_from(["G91", "G90", "G20", "G21", "G43 H1", "G49", "G52 X5. Y-2.", "G52 X0 Y0", "G68 X0 Y0 R30.",
+                          "G69", "G02 I5. J0.", "G03 I-1. J0.", "G01 A15.", "G01 X1 Y2", "F900.",
+                          "G41 D1 G01 X10. Y0.", "G40 G01 X0. Y0.", "M03 S1000", "G28 Z0.", "G53 G00 Z0.", "G91 G28 Z0."])
+_READERS = st.sampled_from(["G43 H1\nX3. Y4.", "G49\nG43 H2\nG00 X1.", "G68 X0 Y0 R30.\nX2. Y3.\nX7.\nG69",
+                            "G52 X5.\nY4.\nG52 X0", "G02 I2. J2.", "G03 I0. J-3."])
+"""Blocks that read the point the moves before them noted: a length change put on the next move (its Z), an
+omitted axis under a rotation or a local offset, an arc's start (full circles: an R arc between random points
+could be no arc, which the controller checks of the suite refuse)."""
+
+
+def plain_moves() -> st.SearchStrategy[str]:
+    """CAM-like programs: runs of straight moves of X, Y and Z numbers (what the loop notes in a step's point), each
+    followed by a block that changes what such a move is to a step (incremental or inch words, a length offset, a
+    frame, an arc, another axis, compensation, a reference return) or that reads the point they noted."""
+    chunk = st.tuples(st.lists(_STRAIGHT, min_size=1, max_size=4), st.one_of(_READERS, _OTHER)).map(
+        lambda c: "\n".join([*c[0], c[1]]))
+    return st.lists(chunk, min_size=1, max_size=6).map(
+        lambda chunks: "G21 G90 G17 G00 X0. Y0. Z10.\nG01 F600.\n" + "\n".join(chunks) + "\nM30\n")
+
+
+@settings(max_examples=60)
+@given(program=plain_moves(), source=st.sampled_from(["fanuc", "linuxcnc"]),
+       target=st.sampled_from(["linuxcnc", "grbl", "isg", "fagor", "fanuc"]), warn=st.booleans())
+def test_plain_moves_noted_by_the_loop_translate_as_through_the_chained_steps(program: str, source: str, target: str,
+                                                                              warn: bool) -> None:
+    """The moves the loop notes in the steps' points (``BlockStep.point``) against the same steps given every block
+    through ``take``: the same text, errors and warnings (a loop that noted no move fails it: a length change put
+    on the next move gets another Z)."""
+    _both(program, source, target, with_tools(MachineSetup(), {1: 10.0, 2: 20.0}), warn)
 
 
 def _corpus() -> list[tuple[str, str]]:

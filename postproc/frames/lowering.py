@@ -49,7 +49,7 @@ from ..ir.expr import Binary, Expr, Num
 from ..ir import Block, CompoundMotion, CutterCompensation, Motion, Section
 from ..ir.keys import watches_none
 from ..lowering.lower import BlockStep, LoweringStep, run_blocks, still_moving
-from ..lowering.move_words import X as X_BIT, Y as Y_BIT, Z as Z_BIT, move_words, moving
+from ..lowering.move_words import move_words, moving
 from ..ir.state import MM_PER_INCH, ModalState, changes_nothing
 from .affine import EXACT, INDEX, XYZ
 from .frame import PLANE_AXES, Frame, Position
@@ -98,7 +98,7 @@ class FrameEvaluator(BlockStep):
             m = ctx.setup.machine
             start = {"X": m.start_x, "Y": m.start_y, "Z": m.start_z}
             run = extra[RUN_KEY] = FrameRun(
-                {a: float(start.get(a, 0.0)) * (m.mm() if a in LINEAR else 1.0) for a in m.axes})
+                {a: float(start.get(a, 0.0)) * (m.mm() if a in LINEAR else 1.0) for a in m.axes}, move_words(ctx))
         if ctx.run_data.get("dry_run"):
             run.symbolic = True  # a dry run sees the part of the program that would be kept symbolically
             self.modal.units = ctx.state.units
@@ -114,12 +114,29 @@ class FrameEvaluator(BlockStep):
         """Absolute millimetres: a move's words are its position (``run``'s common case)."""
         self.words = move_words(ctx)
         """A plain move's numbers, read once for the steps that follow the point (``take_move``)."""
+        run.notes.words = self.words  # (a dry run's copy of the run reads with its own run's reader)
+        self.follow()
 
     def run(self, blocks: Iterator[Block]) -> Iterator[Block]:
         """Every block, as the lowering step takes them (``take``)."""
         return run_blocks(blocks, [self])
 
+    def follow(self) -> None:
+        """``point`` (``BlockStep.point``) as the run stands: a straight move of X, Y and Z numbers is only noted
+        (``take_move``) while no frame is set, in absolute millimetres, before any construct (no jump target to
+        note), once the start no longer stands for X, Y and Z (nothing ``unsettled`` to take off)."""
+        reached = self.reached
+        unsettled = reached.unsettled
+        self.point = reached.notes if (self.frame is None and self.plain_mm and not reached.symbolic
+                                       and "X" not in unsettled and "Y" not in unsettled
+                                       and "Z" not in unsettled) else None
+
     def take(self, block: Block) -> list[Block] | None:
+        out = self._take(block)
+        self.follow()
+        return out
+
+    def _take(self, block: Block) -> list[Block] | None:
         """The common block (a move and its feed, no frame yet, absolute millimetres) only updates the
         position (one ``dict.update``: this step runs for every translation to another dialect, frames or
         not)."""
@@ -149,24 +166,18 @@ class FrameEvaluator(BlockStep):
         return None
 
     def take_move(self, block: Block) -> list[Block] | None:
-        """``take`` for a block the loop found only a move (``only_move``: not asked again here, ~450 instructions
+        """``take`` for a block the loop found only a move (``plain_move``: not asked again here, ~450 instructions
         compiled): with no frame, in absolute millimetres, the position follows its words (a move of X, Y and Z
-        numbers only noted, ``FrameRun.settle``: read once for the steps that follow the point, ``move_words``);
-        else ``take``."""
+        numbers only noted, ``FrameRun.settle``: read once for the steps that follow the point, ``move_words``;
+        a straight one the loop notes itself while ``point`` is set); else ``take``."""
+        m = block.sections["Motion"]
         if self.frame is None and self.plain_mm:
-            m = block.sections["Motion"]
             if isinstance(m, Motion) and moving(m.mode) and not self.ctx.state.symbolic:
                 reached = self.reached
                 words = self.words
                 bits = words.read(m)
                 if bits >= 0:
-                    reached.noted |= bits
-                    if bits & X_BIT:
-                        reached.noted_x = words.x
-                    if bits & Y_BIT:
-                        reached.noted_y = words.y
-                    if bits & Z_BIT:
-                        reached.noted_z = words.z
+                    reached.notes.note(words, bits)
                 else:
                     reached.settle()
                     self.p.update(m.axes)  # type: ignore[arg-type]  # numbers: nothing is symbolic yet
@@ -175,8 +186,9 @@ class FrameEvaluator(BlockStep):
                     unsettled.difference_update(m.axes)
                 if reached.symbolic:
                     self.targets(block.sections)
+                self.follow()
                 return None
-        return still_moving(block, self.take(block))
+        return still_moving(block, self.take(block), m, m.axes if isinstance(m, Motion) else None)  # (a frame carries it)
 
     # -- one block ---------------------------------------------------------------------------------
     def block(self, block: Block) -> None:

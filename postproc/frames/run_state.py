@@ -9,7 +9,7 @@ from typing import Final
 from mypy_extensions import mypyc_attr
 
 from ..compensation.tool_length import ToolLength
-from ..lowering.move_words import X, Y, Z
+from ..lowering.move_words import MoveWords, NotedPoint
 from .frame import Frame, Position
 from .run_order import RunOrder
 
@@ -22,20 +22,17 @@ class FrameRun:
     """What the evaluation has reached: copied with the reading state into a translation's dry run."""
 
     __slots__ = ("frame", "p", "g5x", "symbolic", "work", "order", "unsettled", "scale", "cutter", "tools", "sideways",
-                 "tools_known", "table_known", "noted", "noted_x", "noted_y", "noted_z")
+                 "tools_known", "table_known", "notes")
 
-    def __init__(self, p: Position) -> None:
+    def __init__(self, p: Position, words: MoveWords) -> None:
         self.frame: Frame | None = None
         """None until the first frame command (or a rotation of a work system)."""
         self.p = p
         """The program position, mm (degrees on rotary axes), None where unknown; read through ``point``: the X, Y
-        and Z of the plain moves since it was last read are noted apart (``noted``)."""
-        self.noted = 0
-        """Bits (``postproc.lowering.move_words.X``...) of the axes plain moves noted since ``p`` was brought up to
-        date (``settle``): the commonest block, a plain move with no frame, writes no dictionary."""
-        self.noted_x = 0.0
-        self.noted_y = 0.0
-        self.noted_z = 0.0
+        and Z of the plain moves since it was last read are noted apart (``notes``)."""
+        self.notes = NotedPoint(words)
+        """The X, Y and Z plain moves noted since ``p`` was brought up to date (``settle``): the commonest block, a
+        plain move with no frame, writes no dictionary."""
         self.unsettled: set[str] = set(p)
         """Axes not programmed absolutely since the start: their ``p`` is the set-up's assumed start, not what
         the machine reads as its current point (a read of the current position there is the machine's,
@@ -64,17 +61,7 @@ class FrameRun:
 
     def settle(self) -> None:
         """The noted X, Y and Z into ``p`` (before anything reads it)."""
-        noted = self.noted
-        if not noted:
-            return
-        self.noted = 0
-        p = self.p
-        if noted & X:
-            p["X"] = self.noted_x
-        if noted & Y:
-            p["Y"] = self.noted_y
-        if noted & Z:
-            p["Z"] = self.noted_z
+        self.notes.into(self.p)
 
     def point(self) -> Position:
         """The program position (``p``), brought up to date."""

@@ -48,7 +48,7 @@ from ..ir.state import MM_PER_INCH, PLANE_AXES, ModalState, changes_nothing
 from .lower import BlockStep, LoweringStep, run_blocks
 from .arc_geometry import Arc, chord_points, r_centre_error, r_pieces, signed_radius, split
 from .arc_words import ArcWords
-from .move_words import X as X_BIT, Y as Y_BIT, Z as Z_BIT, move_words
+from .move_words import NotedPoint, move_words
 from .point_after import cycle_end
 
 FORMS: Final = ("lines", "ijk", "r")
@@ -145,6 +145,13 @@ class _Arcs(BlockStep):
         self.kept_centres = option.form == SETTLE and ctx.arc_end.runs == SPIRAL
         """An I/J/K arc only moves the position, as a straight move does: the settle pass of a source whose controller
         keeps the programmed centre leaves such an arc as it is (``_Rewriter._settle``)."""
+        self.follow()
+
+    def follow(self) -> None:
+        """``point`` (``BlockStep.point``) as the run stands: while the position is ``plain``, a straight move of X,
+        Y and Z numbers is only noted (``take_move``)."""
+        rewriter = self.rewriter
+        self.point = rewriter.notes if rewriter.plain else None
 
     def take(self, block: Block) -> list[Block] | None:
         rewriter = self.rewriter
@@ -160,8 +167,10 @@ class _Arcs(BlockStep):
                 ctx.diagnostics.error(located)
             rewriter.unknown()
             rewriter.settle_plain()
+            self.follow()
             return None
         rewriter.settle_plain()
+        self.follow()
         return None if len(out) == 1 and out[0] is block else out
 
     def take_move(self, block: Block) -> list[Block] | None:
@@ -216,12 +225,9 @@ class _Rewriter:
         self.position = self.state.position  # (the same dictionary: nothing replaces it)
         self.read = move_words(ctx)
         """A plain move's numbers, read once for the steps that follow the point (``note``)."""
-        self.noted = 0
-        """Bits (``move_words.X``...) of the axes plain moves noted since the position was last brought up to
-        date (``settle``, before anything reads it)."""
-        self.noted_x = 0.0
-        self.noted_y = 0.0
-        self.noted_z = 0.0
+        self.notes = NotedPoint(self.read)
+        """The X, Y and Z of the plain moves since the position was last brought up to date (``settle``, before
+        anything reads it)."""
         self.plain = False
         """A straight move alone in its block only moves the position to its words (``settle_plain``)."""
         self.settle_plain()
@@ -233,28 +239,12 @@ class _Rewriter:
         bits = words.read(motion)
         if bits < 0:
             return False
-        self.noted |= bits
-        if bits & X_BIT:
-            self.noted_x = words.x
-        if bits & Y_BIT:
-            self.noted_y = words.y
-        if bits & Z_BIT:
-            self.noted_z = words.z
+        self.notes.note(words, bits)
         return True
 
     def settle(self) -> None:
         """The noted numbers into the position (``note``)."""
-        noted = self.noted
-        if not noted:
-            return
-        self.noted = 0
-        position = self.position
-        if noted & X_BIT:
-            position["X"] = self.noted_x
-        if noted & Y_BIT:
-            position["Y"] = self.noted_y
-        if noted & Z_BIT:
-            position["Z"] = self.noted_z
+        self.notes.into(self.position)
 
     def settle_plain(self) -> None:
         """``plain``: not in a kept cycle's profile, no move to restate, absolute words, no increment addresses."""

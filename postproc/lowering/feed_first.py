@@ -21,7 +21,7 @@ _KEYS = frozenset(("Feed", "Motion", "CompoundMotion", CONTROL, ASSIGN))
 class CheckBlocks(LoweringStep):
     """Lowering step for ``translate``: a feed move before any feed rate is a located error (the
     simulator makes the same check itself). Once a feed rate is in force nothing is left to check: the
-    step then looks at no block (``_UntilFed.done``)."""
+    step then looks at no block (``_UntilFed.done``, ``BlockStep.passes``)."""
 
     def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
         return _UntilFed(ctx)
@@ -68,3 +68,4 @@ class _UntilFed(BlockStep):
     def _fed(self) -> None:
         self.done = True
         self.moves = False
+        self.passes = True

@@ -67,7 +67,7 @@ from ..ir.keys import watches_none
 from ..compensation.tool_table import ToolTable
 from .lower import BlockStep, LoweringStep, still_moving
 from .length_point import AXIS, MM_PER_INCH, PLAIN, MachineFrame, follow_point, length_in_force
-from .move_words import Z as Z_BIT, move_words, moving
+from .move_words import Z as Z_BIT, NotedPoint, move_words, moving
 from .point_after import FOLLOWED
 
 _WATCHED: Final = frozenset(("ToolLengthOffset", "Motion", "CompoundMotion", "CycleCall", "DistanceMode", "Units",
@@ -234,20 +234,32 @@ class _Complete(BlockStep):
         self.unplaced = set(axes)  # axes nothing has placed or re-expressed since the start: only they are read
         self.frame = MachineFrame(ctx.setup)  # what puts a machine-coordinate Z in the program's frame
         self.mill = axes == (AXIS,)
-        self.z_noted = False  # a plain absolute move's Z waits in ``noted_z`` (``_settle``): no dictionary written
-        self.noted_z = 0.0
         self.words = move_words(ctx)  # a plain move's numbers, read once for the steps that follow the point
+        self.notes = NotedPoint(self.words)  # a plain absolute move's Z waits here (``_settle``): no dictionary written
+        self.follow()
+
+    def follow(self) -> None:
+        """``point`` (``BlockStep.point``) as the run stands: while no change waits, on a mill, in absolute mode,
+        with no axis diverged or unplaced, a straight move of X, Y and Z numbers only notes its Z (``_take``)."""
+        self.point = self.notes if (self.pending is None and self.mill and self.absolute and len(self.diverged) == 0
+                                    and len(self.unplaced) == 0) else None
 
     def take(self, block: Block) -> list[Block] | None:
-        return self._take(block, watches_none(block.sections, _STATE))
+        out = self._take(block, watches_none(block.sections, _STATE))
+        self.follow()
+        return out
 
     def take_move(self, block: Block) -> list[Block] | None:
-        """``take`` for a block the loop found only a move (``only_move``): it holds none of ``_STATE``, and is
+        """``take`` for a block the loop found only a move (``plain_move``): it holds none of ``_STATE``, and is
         not asked again (~270 instructions a block compiled). While no change waits the move only moves the
         point here; else a waiting change may be put on it (``still_moving``)."""
         if self.pending is None:
-            return self._take(block, True)
-        return still_moving(block, self._take(block, True))
+            out = self._take(block, True)
+        else:  # (the move may get the Z the change needs: other words)
+            motion = block.sections["Motion"]
+            out = still_moving(block, self._take(block, True), motion, motion.axes if isinstance(motion, Motion) else None)
+        self.follow()
+        return out
 
     def _take(self, block: Block, quiet: bool) -> list[Block] | None:
         """``take``; ``quiet``: the block holds none of ``_STATE`` (``watches_none``)."""
@@ -267,8 +279,7 @@ class _Complete(BlockStep):
                     if bits >= 0:
                         if bits & Z_BIT:
                             if absolute:
-                                self.noted_z = read.z  # (into ``pos`` before it is read: ``_settle``)
-                                self.z_noted = True
+                                self.notes.note(read, bits)  # (into ``pos`` before it is read: ``_settle``)
                             else:
                                 self._settle()
                                 known = pos[AXIS]
@@ -447,10 +458,14 @@ class _Complete(BlockStep):
         return out
 
     def _settle(self) -> None:
-        """The Z a plain absolute move noted (``noted_z``) into ``pos``, before anything reads it."""
-        if self.z_noted:
-            self.z_noted = False
-            self.pos[AXIS] = self.noted_z
+        """The Z a plain absolute move noted (``notes``: its X and Y are not followed here) into ``pos``, before
+        anything reads it."""
+        notes = self.notes
+        noted = notes.noted
+        if noted:
+            notes.noted = 0
+            if noted & Z_BIT:
+                self.pos[AXIS] = notes.z
 
     def finish(self) -> list[Block]:
         pending = self.pending

@@ -14,19 +14,24 @@ blocks one at a time. ``lower_for`` runs consecutive ``BlockStep``s as one loop 
 (``run_blocks``) instead of a generator per step, and a block that is only a plain move (``plain_move``: a move
 that is no reference return, and at most its block number; most blocks of a CAM program) skips every step whose
 ``moves`` says such a block is not its business there: a step costs a few instructions on it instead of a
-generator's resumption (~150-250 compiled, issue 30). Both forms compute the same: a ``LoweringStep`` called as
-a function runs its ``BlockStep`` alone through the same loop.
+generator's resumption (~150-250 compiled, issue 30). A step that only follows where such a move takes the
+program while it has nothing else to do (the frame evaluation, the tool length timing, the arc pass) says so
+with its ``point``: the loop reads a straight move of X, Y and Z numbers once for every such step and notes it in
+each one's point (``move_words.NotedPoint``), without calling the step. Both forms compute the same: a
+``LoweringStep`` called as a function runs its ``BlockStep`` alone through the same loop.
 """
 
 from __future__ import annotations
 
-from typing import Callable, Iterator, Sequence
+from typing import Callable, Final, Iterator, Sequence
 
 from mypy_extensions import mypyc_attr
 
 from ..context import Context
 from ..dialect import Dialect
 from ..ir import Block, Motion, Section
+from ..ir.expr import Expr
+from .move_words import OTHER, NotedPoint
 
 Lowering = Callable[[Iterator[Block], Context, type[Dialect]], Iterator[Block]]
 """A lowering step: ``step(blocks, ctx, target)`` -> blocks, a pure block-stream transform."""
@@ -51,6 +56,16 @@ class BlockStep:
     def __init__(self) -> None:
         self.moves = True
         """A block that is only a move is this step's business (False: it goes past unseen)."""
+        self.point: NotedPoint | None = None
+        """Set (while ``moves``): a block that is only a straight move (rapid or linear) of X, Y and Z numbers
+        (``MoveWords.read``) would only be noted here by ``take_move``, so the loop notes it (``NotedPoint.note``)
+        instead of calling the step. The step sets it, and clears it where such a move would do more, in its own
+        ``take``, ``take_move`` or ``finish`` (the loop looks at it at each move)."""
+        self.passes = False
+        """The step's work is over: no block is its business any more (it gives none of them back changed, holds
+        none, follows nothing), so every block goes past it unseen, plain move or not; ``finish`` is still
+        called. Set in its own ``take``, ``take_move`` or ``finish``, for good (a step of a program's start:
+        ``units_at_start``, the feed check, the title of the opening ``%`` line)."""
 
     def take(self, block: Block) -> list[Block] | None:
         raise NotImplementedError
@@ -58,20 +73,26 @@ class BlockStep:
     def take_move(self, block: Block) -> list[Block] | None:
         """``take`` for a block that is only a plain move (``plain_move``, asked by the loop: a step that follows
         every move overrides this to skip asking its own block again: its ``Motion`` is no reference return); the
-        same result as ``take``, except that None means the block is still only a move: one ``take`` changed in
-        place into more (a length change put on it) comes back as ``[block]``, so the steps after it see what it
-        is (``still_moving``)."""
-        return still_moving(block, self.take(block))
+        same result as ``take``, except that None means the block is still only the move it was given (the same
+        ``Motion``, with the same words: the loop notes what it read of it in the later steps' ``point``): one
+        ``take`` changed in place into more (a length change put on it), or into another move (a frame's), comes
+        back as ``[block]``, so the steps after it see what it is (``still_moving``)."""
+        motion = block.sections.get("Motion")
+        return still_moving(block, self.take(block), motion, motion.axes if isinstance(motion, Motion) else None)
 
     def finish(self) -> list[Block]:
         return []
 
 
-def still_moving(block: Block, out: list[Block] | None) -> list[Block] | None:
+def still_moving(block: Block, out: list[Block] | None, motion: Section | None = None,
+                 axes: dict[str, float | Expr] | None = None) -> list[Block] | None:
     """``out``, what a step's ``take`` gave for ``block``, a block that was only a plain move, as ``take_move`` gives
-    it: ``[block]`` where ``take`` changed the block in place so that it is no longer only a plain move."""
-    if out is None and not plain_move(block.sections):
-        return [block]
+    it: ``[block]`` where ``take`` changed the block in place so that it is no longer only a plain move, or (given
+    the ``motion`` it had and that motion's ``axes``) no longer that move with those words."""
+    if out is None:
+        now = plain_motion(block.sections)
+        if now is None or motion is not None and (now is not motion or now.axes is not axes):
+            return [block]
     return out
 
 
@@ -79,19 +100,25 @@ def plain_move(sections: dict[str, Section]) -> bool:
     """The block holds a move (``Motion``) that is no reference return and at most a ``Sequence`` (block number)
     besides: a step that watches neither key has nothing to look for in it but the move. A reference return
     (G28/G30, ``Motion('home')``) goes the general way (``take``): a step that follows only where the tool is taken
-    home (``measured_entries``) skips the rest. Most blocks of a CAM program; the loop asks it once a block
-    (``Walk.through``)."""
+    home (``measured_entries``) skips the rest. Most blocks of a CAM program."""
+    return plain_motion(sections) is not None
+
+
+def plain_motion(sections: dict[str, Section]) -> Motion | None:
+    """The move of a block that is only a plain move (``plain_move``), else None: the loop asks it once a block
+    (``Walk.through``), and notes the move it gives (``BlockStep.point``). (A key test and a look-up: a pass over
+    the one or two items cost ~590 instructions compiled, against ~355.)"""
     size = len(sections)
     if size == 2:
         if "Sequence" not in sections:
-            return False
+            return None
     elif size != 1:
-        return False
+        return None
     motion = sections.get("Motion")
     if not isinstance(motion, Motion):
-        return False
+        return None
     mode = motion.mode
-    return mode != "home" and mode != "home2"
+    return motion if mode != "home" and mode != "home2" else None
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -124,6 +151,7 @@ class Steps(BlockStep):
         one = walk.through(block, 0)
         made = [one] if one is not None else list(walk.given())
         self.moves = any(step.moves for step in self.steps)
+        self.passes = all(step.passes for step in self.steps)
         return None if len(made) == 1 and made[0] is block else made
 
     def finish(self) -> list[Block]:
@@ -147,49 +175,109 @@ class Walk:
         """``next_move[i]``: the first step from ``i`` on whose ``moves`` is True (``len(steps)``: none). A block
         that is only a move goes from one such step to the next: most steps of a translation pass such blocks,
         and looking at each of them cost ~50 instructions a step a block compiled (17 of 21 to LinuxCNC)."""
+        self.next_take: list[int] = []
+        """``next_take[i]``: the first step from ``i`` on whose work is not over (``passes`` False): the other
+        blocks go from one such step to the next."""
+        self.route: list[BlockStep] = []
+        """The steps a plain move goes to from the first step on (``moves``, not ``passes``), in order: a block that
+        comes in as one and stays one goes down this list (one pass over a list, where stepping through
+        ``next_move`` cost two indexed look-ups a step)."""
+        self.route_at: list[int] = []
+        """``route_at[k]``: the index in ``steps`` of ``route[k]``."""
         self.marked()
 
     def marked(self) -> None:
-        """``next_move`` anew: a step's ``moves`` changed (which a step does in its own calls only)."""
+        """``next_move`` and ``next_take`` anew: a step's ``moves`` or ``passes`` changed (which a step does in its
+        own calls only)."""
         steps = self.steps
         n = len(steps)
         found = [n] * (n + 1)
+        taking = [n] * (n + 1)
         for k in range(n - 1, -1, -1):
-            found[k] = k if steps[k].moves else found[k + 1]
+            step = steps[k]
+            found[k] = k if step.moves and not step.passes else found[k + 1]
+            taking[k] = taking[k + 1] if step.passes else k
         self.next_move = found
+        self.next_take = taking
+        self.route = [step for step in steps if step.moves and not step.passes]
+        self.route_at = [k for k in range(n) if steps[k].moves and not steps[k].passes]
 
     def through(self, block: Block, start: int) -> Block | None:
         """``block`` through the steps from ``start`` on: the block that comes out of the last, or None where a
         step gave several blocks or none (``made``, to go on from step ``at``: ``given``). A block that is only
-        a plain move (``plain_move``, asked once, and again for a block a step gave) skips a step whose ``moves`` is
-        False and goes to the others' ``take_move``, which gives it back as ``[block]`` where it changed it in
-        place into more (``still_moving``: a later step must not skip it, nor take it as only a move)."""
+        a plain move (``plain_motion``, asked once, and again for a block a step gave) skips a step whose ``moves``
+        is False; a straight move of X, Y and Z numbers is noted in the ``point`` of a step that has one (read once,
+        ``MoveWords.read``); the other steps get it through ``take_move``, which gives it back as ``[block]`` where
+        it changed it in place into more (``still_moving``: a later step must not skip it, nor take it as only a
+        move, nor note it: a ``take_move`` that gives None leaves the move it was given, ``BlockStep.take_move``)."""
         steps = self.steps
         n = len(steps)
-        plain = plain_move(block.sections)
+        motion = plain_motion(block.sections)
+        bits = UNREAD
         i = start
+        if motion is not None and start == 0:  # down the route while the block stays that move
+            at = self.route_at
+            k = 0
+            down = True  # (no step changed it)
+            for step in self.route:
+                k += 1
+                point = step.point
+                if point is not None:
+                    if bits == UNREAD:
+                        bits = _straight(motion, point)
+                    if bits >= 0:
+                        point.note(point.words, bits)
+                        continue
+                out = step.take_move(block)  # (None: still this move, with these words)
+                if not step.moves or step.passes:
+                    self.marked()  # (a new route: this pass goes on down the one it started, the same after here)
+                if out is None:
+                    continue
+                i = at[k - 1] + 1
+                if len(out) != 1:
+                    self.made = out
+                    self.at = i
+                    return None
+                block = out[0]
+                motion = plain_motion(block.sections)
+                bits = UNREAD
+                down = False
+                break
+            if down:
+                return block
         while i < n:
-            if plain:
+            if motion is not None:
                 i = self.next_move[i]
                 if i == n:
                     break
                 step = steps[i]
                 i += 1
-                out = step.take_move(block)
-                if not step.moves:
+                point = step.point
+                if point is not None:
+                    if bits == UNREAD:
+                        bits = _straight(motion, point)
+                    if bits >= 0:
+                        point.note(point.words, bits)
+                        continue
+                out = step.take_move(block)  # (None: still this move, with these words)
+                if not step.moves or step.passes:
                     self.marked()
             else:
+                i = self.next_take[i]
+                if i == n:
+                    break
                 step = steps[i]
                 i += 1
                 moves = step.moves
                 out = step.take(block)
-                if step.moves != moves:
+                if step.moves != moves or step.passes:
                     self.marked()
             if out is None:
                 continue
             if len(out) == 1:
                 block = out[0]
-                plain = plain_move(block.sections)
+                motion = plain_motion(block.sections)
+                bits = UNREAD
                 continue
             self.made = out
             self.at = i
@@ -219,6 +307,19 @@ class Walk:
             self.marked()
             for held in held_blocks:
                 yield from self.onward(held, k + 1)
+
+
+UNREAD: Final = -2
+"""``Walk.through``: the block's move is not read yet."""
+
+
+def _straight(motion: Motion, point: NotedPoint) -> int:
+    """What the loop notes of a plain move: the bits of its X, Y and Z numbers read by ``point``'s reader where it is
+    a straight move (``OTHER``: an arc, or other words, go to the step's ``take_move``)."""
+    mode = motion.mode
+    if mode == "linear" or mode == "rapid":
+        return point.words.read(motion)
+    return OTHER
 
 
 def register_transform(transform: Lowering) -> Lowering:

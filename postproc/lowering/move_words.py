@@ -10,7 +10,10 @@ dictionary of their own (``dict.update``, ~800). Here the words are read once fo
 in native fields, brought into its dictionary only before something reads it (each step's ``settle``).
 
 A move that names another axis, or a word that is no ``float`` (a computed word, an ``int``), is not read here
-(``OTHER``): the steps take it their general way. A read is keyed on the ``Motion`` and its dictionary, held
+(``OTHER``): the steps take it their general way. A step notes the numbers in a ``NotedPoint`` (the one holder of
+the frame evaluation, the tool length timing and the arc pass); while its ``BlockStep.point`` is set, the lowering
+loop notes a straight move into it without calling the step (``lower.Walk.through``): one read and three stores
+a step, where a call, a look-up of the move and the step's own tests cost it ~400 instructions compiled. A read is keyed on the ``Motion`` and its dictionary, held
 here (so neither is freed and its address reused), and on the dictionary's size: a step that changes a move's
 words makes a new ``Motion`` (``tool_length_timing``, ``sideways_offsets``), as the steps after it must see.
 """
@@ -96,6 +99,45 @@ class MoveWords:
         self.size = size
         self.bits = OTHER
         return OTHER
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class NotedPoint:
+    """The X, Y and Z numbers of the plain moves a step follows, noted (``note``) since the step last brought its
+    position up to date (the step's ``settle``: ``into``, before anything reads the position). The step's own
+    ``take_move`` and the lowering loop note the same way, through ``note``."""
+
+    def __init__(self, words: MoveWords) -> None:
+        self.words = words
+        """The run's reader (``move_words``): what the loop reads a move with before it notes it here."""
+        self.noted = 0
+        """Bits (``X``, ``Y``, ``Z``) of the axes noted since the position was last brought up to date."""
+        self.x = 0.0
+        self.y = 0.0
+        self.z = 0.0
+
+    def note(self, words: MoveWords, bits: int) -> None:
+        """The numbers ``words`` read last (``bits``, ``MoveWords.read``: no ``OTHER``), noted."""
+        self.noted |= bits
+        if bits & X:
+            self.x = words.x
+        if bits & Y:
+            self.y = words.y
+        if bits & Z:
+            self.z = words.z
+
+    def into(self, position: dict[str, float | None]) -> None:
+        """The noted numbers into ``position`` (and none noted any more)."""
+        noted = self.noted
+        if not noted:
+            return
+        self.noted = 0
+        if noted & X:
+            position["X"] = self.x
+        if noted & Y:
+            position["Y"] = self.y
+        if noted & Z:
+            position["Z"] = self.z
 
 
 def moving(mode: str | None) -> bool:

@@ -111,6 +111,7 @@ class _TitleAsComment(BlockStep):
             head.append(_comment(block.line, title, block.eol))
         self.head = None
         self.moves = False
+        self.passes = True  # (no block is its business any more)
         return head
 
     def finish(self) -> list[Block]:

@@ -67,6 +67,7 @@ class _Units(BlockStep):
             return None
         self.done = True
         self.moves = False
+        self.passes = True  # (no block is its business any more)
         if "Units" in keys:
             return None  # the program says its units before it reads a length
         if PLAIN.issuperset(keys):
