@@ -29,6 +29,8 @@ no move only (grbl's family adds a spindle stop there, before a program stop); `
 ``motion_words`` asks only of a move with no axis words (the lane leaves such a move to it), and
 ``check_reference_return``, asked of a reference return only."""
 _BASE: Final = frozenset(WordWriter.__mro__)
+LINES_KEPT: Final = 256
+"""The one-word lines ``ExpansionMoves`` remembers at most (then it starts again): a row of holes writes a few."""
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -45,6 +47,11 @@ class ExpansionMoves(MoveLane):
         self.linear = codes.spell("motion", "linear") or ""
         """The codes of a rapid and a feed move, spelled once ('': the table has none, the general path
         refuses the move)."""
+        self.lines: dict[tuple[str, str, float, str], str] = {}
+        """(code, axis, number, units) -> the line of a move that writes that one word, where spelling its
+        number changes nothing of the writer (no rounding, nothing carried: ``_position`` then reads the
+        writer's table of exact texts): an expansion writes the same few lines (``G1 Z-5.``, ``G0 Z2.``) at every
+        hole."""
         self.driven: frozenset[str] | None = writer.DRIVEN_AXES
         """The axes the controller drives (None: every one): a move of another is left to the general path,
         which refuses it."""
@@ -79,7 +86,17 @@ class ExpansionMoves(MoveLane):
             return None  # every axis left out: ``motion_words`` asks ``left_out`` of a move with none
         as_written = block.canonical and writer.source_numbers
         if written == 1:
-            return f"{code} {last}{self._number(writer, block, last, last_value, as_written)}\n"
+            if as_written or writer.rounding or writer.carry:
+                return f"{code} {last}{self._number(writer, block, last, last_value, as_written)}\n"
+            key = (code, last, last_value, writer.modal.units)
+            line = self.lines.get(key)
+            if line is None:
+                line = f"{code} {last}{_position(writer, last, last_value, False)}\n"
+                if not writer.carry:  # (spelt exactly: the same line every time)
+                    if len(self.lines) >= LINES_KEPT:
+                        self.lines.clear()
+                    self.lines[key] = line
+            return line
         words = [code]
         for axis, value in axes.items():
             if not isinstance(value, float):
