@@ -86,7 +86,7 @@ class ExpansionMoves(MoveLane):
             return None  # every axis left out: ``motion_words`` asks ``left_out`` of a move with none
         as_written = block.canonical and writer.source_numbers
         if written == 1:
-            if as_written or writer.rounding or writer.carry:
+            if writer.rounding or writer.carry or (as_written and _has_word(block, last)):
                 return f"{code} {last}{self._number(writer, block, last, last_value, as_written)}\n"
             key = (code, last, last_value, writer.modal.units)
             line = self.lines.get(key)
@@ -114,6 +114,14 @@ class ExpansionMoves(MoveLane):
         writer's, else ``_position``."""
         number = writer.source_number(block, axis, value, False) if as_written else None
         return number if number is not None else _position(writer, axis, value, False)
+
+
+def _has_word(block: Block, letter: str) -> bool:
+    """Whether the block as read has a ``letter`` word (``source_number`` copies only such a word's text)."""
+    for word, _ in block.words:
+        if word == letter:
+            return True
+    return False
 
 
 def _owner(cls: type, name: str) -> type | None:

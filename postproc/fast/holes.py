@@ -99,7 +99,7 @@ class NextHoleLane(HoleLane):
         end: dict[str, float] | None = None
         over = (0.0, 0.0)
         if expansion.ENDS_OVER_THE_SPOT:  # its levels passed ``end``'s checks for the remembered block
-            over = next(holes(cycle))  # (the spot as the expansion makes it: X-0. ends at 0.0, as ``end`` finds)
+            over = holes(cycle)[0]  # (the spot as the expansion makes it: X-0. ends at 0.0, as ``end`` finds)
             end = dict(here)
             end[first], end[second], end[normal] = over[0], over[1], expansion.return_level(cycle)
         self.offered = False
