@@ -15,12 +15,16 @@ import pytest
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
+import io
+
 import postproc.fast.reading as reading
-from postproc.api import read_program
+from postproc.api import read_program, translate
 from postproc.cycles.resolve import CannedCycleResolveSyntax
 from postproc.errors import ErrorLevel, ErrorList
 from postproc.fast.holes import NextHoleLane
+from postproc.errors import Diagnostics
 from postproc.ir import Block, CompoundMotion
+from postproc.lowering.point_after import _moves_end
 from postproc.plugins import default_registry
 from postproc.setup.machine_setup import MachineSetup
 
@@ -44,7 +48,7 @@ def programs(draw: st.DrawFn) -> str:
         elif kind == 1:
             lines.append(draw(st.sampled_from(CHANGES)))
         else:
-            x = draw(st.sampled_from(["", "X4.", "X-7.5", "X0."]))
+            x = draw(st.sampled_from(["", "X4.", "X-7.5", "X0.", "X-0."]))
             y = draw(st.sampled_from(["", "Y3.", "Y0.25", "Y-2."]))
             lines.append(" ".join(w for w in (draw(st.sampled_from(["", "N20"])), x, y,
                                                draw(st.sampled_from(["", "(H)"]))) if w) or "X1.")
@@ -144,3 +148,48 @@ def test_the_lane_is_chosen_where_the_base_resolves() -> None:
     assert {"fanuc", "linuxcnc"} <= set(DIALECTS)
     assert isinstance(reading.hole_lane(CannedCycleResolveSyntax("fanuc")), NextHoleLane)
     assert reading.hole_lane(Checking("fanuc")) is None
+
+
+def ends_given(program: str, target: str) -> int:
+    """Translate ``program`` from Fanuc to ``target`` (a target that expands the cycles, so the steps that
+    follow the point ask where each hole's moves end); every end the lane gave a next-hole block's motion
+    (``holes.moves_end``) and the run kept must be what the general walk over its moves finds
+    (``point_after.compound_end``'s). How many it gave."""
+    given: list[tuple[CompoundMotion, object]] = []
+
+    class Spy(NextHoleLane):
+        def repeat(self, block: Block, ctx: Any) -> bool:
+            done = super().repeat(block, ctx)
+            compound = block.sections.get("CompoundMotion")
+            if done and isinstance(compound, CompoundMotion) and compound.ended:
+                given.append((compound, compound.end))
+            return done
+
+    with lanes(Spy):
+        try:
+            translate(program.splitlines(keepends=True), io.StringIO(), file="t.nc", source="fanuc", target=target,
+                      setup=MachineSetup(), diagnostics=Diagnostics(warn_stream=io.StringIO()))
+        except ErrorList:
+            pass
+    for compound, end in given:
+        if compound.end is end:  # (a step that replaced the moves forgot it, and walked the new ones)
+            assert repr(end) == repr(_moves_end(compound.items))  # (repr: -0.0 is not 0.0 here)
+    return len(given)
+
+
+@pytest.mark.parametrize("target", ["linuxcnc", "grbl"])
+@settings(max_examples=100, deadline=None)
+@given(program=programs())
+@example(program="G21 G17 G90 G0 X0. Y0. Z20.\nS1000 M03\nF150.\nG99 G81 X1. Y2. Z-5. R2.\nX4.\nY3.\nX-0.\n"
+                 "G98 G83 Q2. X1. Y2. Z-5. R2.\nX4.\nX0. Y3.\nG18\nX4.\nG17\nN20 X-7.5 (H)\nG80\nM30\n")
+def test_a_next_hole_motion_ends_where_its_moves_do(program: str, target: str) -> None:
+    ends_given(program, target)
+
+
+def test_next_hole_motions_are_given_their_end() -> None:
+    """The comparison above is not empty: in the cycles benchmark's rows, every next-hole block after the
+    second is given where its moves end."""
+    program = ("G21 G17 G90 G0 X0. Y0. Z10.\nS1800 M03\nG99 G81 X0. Y0.0 Z-5. R2. F150.\nX6.35 Y0.0\nX12.7 Y0.0\n"
+               "X19.05 Y0.0\nG80\nG98 G83 X0. Y5.0 Z-12. R2. Q3. F120.\nX6.35 Y5.0\nX12.7 Y5.0\nG80\nM30\n")
+    assert ends_given(program, "linuxcnc") == 3
+    assert ends_given(program, "grbl") == 3

@@ -101,8 +101,9 @@ def test_the_lane_writes_what_the_general_path_writes(program: list[str], source
 
 def test_the_lane_is_chosen_where_the_base_writes_moves() -> None:
     """The shipped writers that write a move of an expansion with the base's methods take the lane (grbl's
-    family base too: its ``item_line`` acts on a program stop only); the test above would pass with no lane
-    ever chosen. A writer class that overrides a method the lane skips does not, whatever it does."""
+    family base too: its ``item_line``, which ``compound`` asks of an item that is no move only, adds a spindle
+    stop before a program stop); the test above would pass with no lane ever chosen. A writer class that
+    overrides a method the lane skips (``move_line``, ``motion_words``) does not, whatever it does."""
     for target in ("linuxcnc", "grbl", "grblhal", "isg", "fagor"):
         assert ("fanuc", target) in PAIRS, target
 
@@ -110,8 +111,13 @@ def test_the_lane_is_chosen_where_the_base_writes_moves() -> None:
         def motion_words(self, s: Motion, block: Block) -> list[str]:
             return super().motion_words(s, block)
 
+    class Lining(type(_writer("fanuc", "linuxcnc"))):  # type: ignore[misc]
+        def move_line(self, item: Motion, block: Block) -> str:
+            return super().move_line(item, block)
+
     ctx = default_registry().dialect("fanuc").context("p.nc", MachineSetup(), Diagnostics())
     assert choose_moves(Moving(ctx, "fanuc", default_registry().dialect("linuxcnc"))) is None
+    assert choose_moves(Lining(ctx, "fanuc", default_registry().dialect("linuxcnc"))) is None
 
 
 def test_the_lane_writes_the_moves_of_a_row_of_holes() -> None:

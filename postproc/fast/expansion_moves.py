@@ -1,7 +1,7 @@
 """The expansion-move lane: a straight move of an expanded hole cycle (``G0 X.. Y.. Z..``, ``G1 Z..``) written
 without the word writer's item dispatch, and without a new ``Motion`` for the axes it leaves out.
 
-A speed-only copy of what ``WordWriter.compound`` writes for such a move (``item_line`` of the move less the
+A speed-only copy of what ``WordWriter.compound`` writes for such a move (``move_line`` of the move less the
 axes ``_left_out`` leaves out, which ``motion_words`` spells), kept apart from the classes dialects extend
 (STYLE.md 11). ``install_expansion`` gives it to a run only where the writer class writes a move of an
 expansion with the base's own methods (``MOVE_METHODS``), and ``tests/test_expansion_moves.py`` holds it to
@@ -11,7 +11,6 @@ then writes it. Each number is spelt by the writer's own functions (``_position`
 
 from __future__ import annotations
 
-import sys
 from typing import Final
 
 from mypy_extensions import mypyc_attr
@@ -22,21 +21,22 @@ from ..output.writer_base import Writer
 from ..rs274.word_numbers import _position
 from ..rs274.writer import MoveLane, WordWriter
 
-MOVE_METHODS: Final = ("item_line", "motion_words")
-"""What the general path calls to write a straight move of an expansion (``compound``'s loop calls both as
-methods; ``_left_out`` is a module function, ``source_number`` and ``_position`` the lane calls too).
-Not among them: ``left_out``, which ``motion_words`` asks only of a move with no axis words (the lane
-leaves such a move to it), and ``check_reference_return``, asked of a reference return only."""
+MOVE_METHODS: Final = ("move_line", "motion_words")
+"""What the general path calls to write a straight move of an expansion (``compound``'s loop calls
+``move_line``, which calls ``motion_words``; ``_left_out`` is a module function, ``source_number`` and
+``_position`` the lane calls too). Not among them: ``item_line``, which ``compound`` asks of an item that is
+no move only (grbl's family adds a spindle stop there, before a program stop); ``left_out``, which
+``motion_words`` asks only of a move with no axis words (the lane leaves such a move to it), and
+``check_reference_return``, asked of a reference return only."""
 _BASE: Final = frozenset(WordWriter.__mro__)
-_FAMILY_ITEM_LINE: Final = ("postproc.grbl_family.writer", "GrblFamilyWriter")
-"""A family base whose ``item_line`` writes a move as the base's: grbl's, which adds a spindle stop before a
-program stop of an expansion only (a ``ProgramControl`` item, never a move)."""
+LINES_KEPT: Final = 256
+"""The one-word lines ``ExpansionMoves`` remembers at most (then it starts again): a row of holes writes a few."""
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
 class ExpansionMoves(MoveLane):
     """Writes a straight move of an expansion in absolute distance mode whose axis words are numbers, as
-    ``item_line`` writes it after ``_left_out``: its motion code and each axis word it does not leave out
+    ``move_line`` writes it after ``_left_out``: its motion code and each axis word it does not leave out
     (an axis at the number the move written just before it stands at: ``before``)."""
 
     def __init__(self, writer: WordWriter) -> None:
@@ -47,32 +47,57 @@ class ExpansionMoves(MoveLane):
         self.linear = codes.spell("motion", "linear") or ""
         """The codes of a rapid and a feed move, spelled once ('': the table has none, the general path
         refuses the move)."""
+        self.lines: dict[tuple[str, str, float, str], str] = {}
+        """(code, axis, number, units) -> the line of a move that writes that one word, where spelling its
+        number changes nothing of the writer (no rounding, nothing carried: ``_position`` then reads the
+        writer's table of exact texts): an expansion writes the same few lines (``G1 Z-5.``, ``G0 Z2.``) at every
+        hole."""
         self.driven: frozenset[str] | None = writer.DRIVEN_AXES
         """The axes the controller drives (None: every one): a move of another is left to the general path,
         which refuses it."""
 
     def line(self, item: Motion, before: dict[str, float | Expr] | None, block: Block) -> str | None:
         """The move's line, or None. Its words are checked before any is spelt: spelling one may change the
-        writer's state (what a rounding carries), so a move left to the general path is spelt there only."""
+        writer's state (what a rounding carries), so a move left to the general path is spelt there only.
+        (One pass checks the words and counts those written, and a move that writes one word, the commonest
+        of a hole, spells it without walking its words again.)"""
         if item.center is not None or item.radius is not None:
             return None
         mode = item.mode
         code = self.rapid if mode == "rapid" else self.linear if mode == "linear" else ""
         writer = self.writer
         if not code or writer.modal.distance != "absolute":
-            return None  # (not absolute: ``item_line`` writes the distance mode's code first)
+            return None  # (not absolute: ``move_line`` writes the distance mode's code first)
         axes = item.axes
         driven = self.driven
-        if driven is None:
-            for value in axes.values():
-                if type(value) is not float:
-                    return None
-        else:
-            for axis, value in axes.items():
-                if type(value) is not float or axis not in driven:
-                    return None
+        written = 0
+        last = ""
+        last_value = 0.0
+        for axis, value in axes.items():
+            if type(value) is not float or (driven is not None and axis not in driven):
+                return None
+            if before is not None:
+                was = before.get(axis)
+                if type(was) is float and was == value:
+                    continue
+            written += 1
+            last, last_value = axis, value
+        if written == 0:
+            return None  # every axis left out: ``motion_words`` asks ``left_out`` of a move with none
         as_written = block.canonical and writer.source_numbers
-        text = code
+        if written == 1:
+            if writer.rounding or writer.carry or (as_written and _has_word(block, last)):
+                return f"{code} {last}{self._number(writer, block, last, last_value, as_written)}\n"
+            key = (code, last, last_value, writer.modal.units)
+            line = self.lines.get(key)
+            if line is None:
+                line = f"{code} {last}{_position(writer, last, last_value, False)}\n"
+                if not writer.carry:  # (spelt exactly: the same line every time)
+                    if len(self.lines) >= LINES_KEPT:
+                        self.lines.clear()
+                    self.lines[key] = line
+            return line
+        words = [code]
         for axis, value in axes.items():
             if not isinstance(value, float):
                 return None  # (none: tested above, before a word was spelt)
@@ -80,13 +105,23 @@ class ExpansionMoves(MoveLane):
                 was = before.get(axis)
                 if type(was) is float and was == value:
                     continue
-            number = writer.source_number(block, axis, value, False) if as_written else None
-            if number is None:
-                number = _position(writer, axis, value, False)
-            text = f"{text} {axis}{number}"
-        if len(text) == len(code):
-            return None  # every axis left out: ``motion_words`` asks ``left_out`` of a move with none
-        return text + "\n"
+            words.append(axis + self._number(writer, block, axis, value, as_written))
+        return " ".join(words) + "\n"
+
+    @staticmethod
+    def _number(writer: WordWriter, block: Block, axis: str, value: float, as_written: bool) -> str:
+        """An axis word's number as ``motion_words`` spells it: the source's text where that is the
+        writer's, else ``_position``."""
+        number = writer.source_number(block, axis, value, False) if as_written else None
+        return number if number is not None else _position(writer, axis, value, False)
+
+
+def _has_word(block: Block, letter: str) -> bool:
+    """Whether the block as read has a ``letter`` word (``source_number`` copies only such a word's text)."""
+    for word, _ in block.words:
+        if word == letter:
+            return True
+    return False
 
 
 def _owner(cls: type, name: str) -> type | None:
@@ -100,12 +135,7 @@ def choose_moves(writer: Writer) -> MoveLane | None:
         return None
     cls = type(writer)
     for name in MOVE_METHODS:
-        owner = _owner(cls, name)
-        if owner in _BASE:
-            continue
-        module, family = _FAMILY_ITEM_LINE
-        base = sys.modules.get(module)  # (loaded wherever the class is: a run of another target does not load it)
-        if name != "item_line" or base is None or owner is not getattr(base, family, None):
+        if _owner(cls, name) not in _BASE:
             return None
     return ExpansionMoves(writer)
 

@@ -18,9 +18,9 @@ from mypy_extensions import mypyc_attr
 from ..context import Context, HoleLane
 from ..errors import PostprocError
 from ..ir.expr import Expr
-from ..ir import Block
+from ..ir import Block, CompoundMotion
 from ..ir.state import PLANE_AXES, ModalState
-from ..cycles.expansion import CycleExpansion
+from ..cycles.expansion import CycleExpansion, holes
 from ..cycles.resolve import (DWELL_KEY, STATE_KEY, WORD_RANK, CannedCycleResolveSyntax, Failer, LazyExpansion,
                               cycle_words, drop_cycle_sections)
 from ..cycles.rigid_tap import RIGID_KEY
@@ -34,7 +34,7 @@ class Remembered:
     """A next-hole block the resolver resolved from its words: its cycle record, and what the resolver
     read from the state to make it (``signature``)."""
 
-    __slots__ = ("signature", "cycle", "expansion", "code", "peck", "limit", "order")
+    __slots__ = ("signature", "cycle", "expansion", "code", "peck", "limit", "order", "compound")
 
     def __init__(self, signature: tuple[Any, ...], cycle: CannedCycle, expansion: CycleExpansion, code: str,
                  peck: str, limit: int) -> None:
@@ -43,6 +43,9 @@ class Remembered:
         first, second, _ = PLANE_AXES[cycle.plane]
         self.order = (first, second) if WORD_RANK[first] < WORD_RANK[second] else (second, first)
         """The plane's two axes in ``WORD_ORDER``, the order the resolver keeps a block's words in."""
+        self.compound: CompoundMotion | None = None
+        """The motion of the last block resolved from this record: where its moves end, once a step has asked
+        (``point_after.compound_end``), gives the next hole's (``moves_end``)."""
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -94,16 +97,26 @@ class NextHoleLane(HoleLane):
         fail.words = words
         expansion = memo.expansion
         end: dict[str, float] | None = None
+        over = (0.0, 0.0)
         if expansion.ENDS_OVER_THE_SPOT:  # its levels passed ``end``'s checks for the remembered block
+            over = holes(cycle)[0]  # (the spot as the expansion makes it: X-0. ends at 0.0, as ``end`` finds)
             end = dict(here)
-            end[first], end[second], end[normal] = spot[first], spot[second], expansion.return_level(cycle)
+            end[first], end[second], end[normal] = over[0], over[1], expansion.return_level(cycle)
         self.offered = False
+        before = memo.compound
         try:
             self.resolver.install(block, ctx, cycle, LazyExpansion(expansion, cycle, memo.limit, fail, memo.code,
                                                                    memo.peck, None, ctx), end)
         except PostprocError:
             drop_cycle_sections(block)
             raise
+        compound = block.sections.get("CompoundMotion")
+        if isinstance(compound, CompoundMotion):
+            if end is not None and before is not None and before.ended:
+                moved = moves_end(before.end, cycle, over)
+                if moved is not None:
+                    compound.end, compound.ended = moved, True
+            memo.compound = compound
         return True
 
     def resolved(self, block: Block, ctx: Context) -> None:
@@ -113,8 +126,37 @@ class NextHoleLane(HoleLane):
         cycle = block.sections.get("CannedCycle")
         if isinstance(cycle, CannedCycle) and cycle.repeat == 1 and not cycle.step:
             cw = cycle_words(ctx)
-            self.memo = Remembered(signature(ctx.state), cycle, self.resolver.expansion(cycle.kind),
-                                   cw.name(cycle.kind), cw.peck, ctx.setup.limits.moves_per_block)
+            self.memo = memo = Remembered(signature(ctx.state), cycle, self.resolver.expansion(cycle.kind),
+                                          cw.name(cycle.kind), cw.peck, ctx.setup.limits.moves_per_block)
+            compound = block.sections.get("CompoundMotion")
+            if isinstance(compound, CompoundMotion):
+                memo.compound = compound
+
+
+DEEP: Final = 1e-6
+"""A hole whose bottom lies this far below its R level (1,000 times ``expansion.EPS``): its cut to the bottom is
+a move at every hole, wherever the tool stood before it."""
+
+
+def moves_end(before: dict[str, float | None] | None, cycle: CannedCycle,
+              over: tuple[float, float]) -> dict[str, float | None] | None:
+    """Where the moves of a next-hole block of one hole end (``point_after.compound_end``), from where those of
+    the block before it, resolved from the same record, end (``before``), or None (unsure: the general walk
+    finds it). A family that ``ENDS_OVER_THE_SPOT`` moves only X, Y and Z, and every hole's moves from its cut
+    to the bottom on are the same whatever the tool's level before the hole: its last move, which names the
+    three axes, is over the hole's spot (``over``: the plane's two axes as the expansion's loop makes them,
+    ``holes``) at the same level as the hole before. ``tests/test_cycle_repeat.py`` holds the answer to the
+    walk over the moves."""
+    if before is None or cycle.repeat != 1 or cycle.r is None or cycle.bottom is None \
+            or not cycle.r - cycle.bottom > DEEP:
+        return None
+    first, second, normal = PLANE_AXES[cycle.plane]
+    if len(before) != 3 or first not in before or second not in before or before.get(normal) is None:
+        return None
+    moved = dict(before)
+    moved[first] = over[0]
+    moved[second] = over[1]
+    return moved
 
 
 def signature(state: ModalState) -> tuple[Any, ...]:

@@ -15,7 +15,7 @@ from typing import Any, ClassVar, Iterable, Iterator, TextIO
 
 from ..errors import UnsupportedError
 from ..ir.expr import Expr
-from ..ir import Block, Motion, Section
+from ..ir import Block, Motion
 from ..ir.lathe_sections import LatheCycle, ThreadLead
 from .lathe_words import FIRST_WORDS, ONE_WORDS, SECOND_WORDS
 from .writer import WordWriter
@@ -235,17 +235,17 @@ class LatheWordWriter(WordWriter):
                 self.modal.distance = "incremental"
         return super().motion_words(s, block)
 
-    def item_line(self, item: Section, block: Block) -> str:
+    def move_line(self, item: Motion, block: Block) -> str:
         """An expansion's move is absolute: a lathe without G90 leaves U/W mode for it by itself."""
         if self.ctx.lathe and self.codes.spell("distance", "absolute") is None:
             incremental = self.modal.distance == "incremental"
             self.modal.distance = "absolute"
             try:
-                return super().item_line(item, block)
+                return super().move_line(item, block)
             finally:
                 if incremental:
                     self.modal.distance = "incremental"
-        return super().item_line(item, block)
+        return super().move_line(item, block)
 
     def spindle_clamp_words(self, s: Any, block: Block) -> list[str]:
         words = [] if "CoordinateSet" in block.sections else [self.code("coordinate_set", None, "a spindle speed clamp", block)]

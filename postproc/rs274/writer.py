@@ -56,7 +56,7 @@ SectionWriter = Callable[[Any, Any, Block], list[str]]
 @mypyc_attr(allow_interpreted_subclasses=True)
 class MoveLane:
     """A speed-only shortcut a run installs on its word writer (``postproc.fast.expansion_moves``): ``line``
-    writes a move of an expansion as ``compound`` writes it (``item_line`` of the move less the axes
+    writes a move of an expansion as ``compound`` writes it (``move_line`` of the move less the axes
     ``_left_out`` leaves out), or answers None (the general path writes it). An object, not a function: the
     expansion's loop calls it natively."""
 
@@ -430,7 +430,7 @@ class WordWriter(MotionWords):
             if isinstance(item, Motion):
                 line = None if moves is None else moves.line(item, before, block)
                 lines.append(line if line is not None else
-                             self.item_line(item if before is None else _left_out(item, before), block))
+                             self.move_line(item if before is None else _left_out(item, before), block))
                 before = item.axes if _is_straight(item) else None
             else:
                 lines.append(self.item_line(item, block))
@@ -452,15 +452,22 @@ class WordWriter(MotionWords):
         return text
 
     def item_line(self, item: Section, block: Block) -> str:
-        words: list[str] = []
+        """The line of an expansion's item that is not a move (a feed, a dwell, a spindle action, a stop), as
+        ``compound`` writes it; a move is ``move_line``'s."""
         if isinstance(item, Motion):
-            if self.modal.distance != "absolute":
-                words.append(self.code("distance", "absolute", "absolute distance mode", block))
-                self.modal.distance = "absolute"
-            words.extend(self.motion_words(item, block))
-        else:
-            words.extend(self.section_words(item.KEY, item, block))
-            self._track({item.KEY: item})
+            return self.move_line(item, block)
+        words = self.section_words(item.KEY, item, block)
+        self._track({item.KEY: item})
+        return " ".join(words) + "\n"
+
+    def move_line(self, item: Motion, block: Block) -> str:
+        """The line of an expansion's move (absolute, in program units): the absolute distance mode's code
+        first where another is in force, then the move's words (``motion_words``)."""
+        words: list[str] = []
+        if self.modal.distance != "absolute":
+            words.append(self.code("distance", "absolute", "absolute distance mode", block))
+            self.modal.distance = "absolute"
+        words.extend(self.motion_words(item, block))
         return " ".join(words) + "\n"
 
     def source_text(self, block: Block) -> str:
