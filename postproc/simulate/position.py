@@ -241,8 +241,9 @@ class Position:
         names = self.axes
         found = 0
         for i in range(len(names)):  # the machine's axes first, each looked up (the words of a block are most
-            # often all axes: a look-up ~60 instructions compiled, where taking an item of ``axes.items()`` and
-            # finding its axis's place by its letter cost ~250)
+            # often all axes: a look-up ~130 instructions compiled, where taking an item of ``axes.items()`` and
+            # finding its axis's place by its letter cost ~230; ``target`` 1,600 -> 1,307 a move of three words,
+            # callgrind, branch simfast8)
             axis = names[i]
             word = axes.get(axis)
             if word is None or increments is not None and axis in increments:
