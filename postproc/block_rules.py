@@ -114,9 +114,9 @@ def arc_centre(s: tuple[float, float], e: tuple[float, float], axes: tuple[str, 
     c = (s[0] + offsets.get(a1, 0.0), s[1] + offsets.get(a2, 0.0))
     r0 = math.hypot(s[0] - c[0], s[1] - c[1])
     r1 = math.hypot(e[0] - c[0], e[1] - c[1])
-    letter = next((_CENTRE_LETTERS[a] for a in offsets if a in _CENTRE_LETTERS), "G")
     chord = math.hypot(e[0] - s[0], e[1] - s[1]) / unit
     if not rule.allows(r0 / unit, r1 / unit, inch, chord):
+        letter = next((_CENTRE_LETTERS[a] for a in offsets if a in _CENTRE_LETTERS), "G")  # (only for the error)
         limit = rule.limit(r0 / unit, r1 / unit, inch, chord)
         accepts = "a move of the centre" if rule.of_centre_shift else "a difference"
         raise ArcError(f"arc end point is not on the circle: radius {r0:.4f} mm at the start, "

@@ -17,7 +17,7 @@ from .chords import pair_with_chords
 from .events import MOVES_THE_TOOL, Event
 from .move_record import MoveRecord
 from .normal_move import FEED_TOLERANCE as FEED_TOLERANCE, Move, same_feed as _same_feed  # (public names here too)
-from .points import beyond, key_index, norm, point_value
+from .points import Steps, beyond, key_index, norm, point_value
 from .runs import Normaliser, normalise as normalise, pull_item
 
 Point = tuple[float, float, float]
@@ -61,6 +61,8 @@ class Report:
     chord_deviation: float = 0.0
     chord_where: tuple[int, int] | None = None
     """Source lines (IN, OUT) of the chord furthest from its arc."""
+    steps: Steps = field(default_factory=Steps, repr=False, compare=False)
+    """Where ``_differ`` collects a pair's distances (one for the comparison: no object a pair)."""
 
     @property
     def ok(self) -> bool:
@@ -460,24 +462,13 @@ def _differ(a: Move | Event | None, b: Move | Event | None, report: Report) -> s
     if not _same_feed(a.f, b.f):
         return f"IN feeds at F{a.f:g}, OUT at F{b.f:g} ({describe(a)})"
     a_keys, a_end, b_keys, b_end = a.end_keys, a.end_values, b.end_keys, b.end_values
-    n = 0  # the axes both have (math.dist's norm): the first three in locals, any further one in a list
-    d0 = d1 = d2 = 0.0
-    more: list[float] | None = None
+    steps = report.steps  # the axes both have (math.dist's norm)
+    steps.clear()
     for i in range(len(a_keys)):
         j = key_index(b_keys, a_keys[i], i)
         if j >= 0:
-            d = a_end[i] - b_end[j]
-            if n == 0:
-                d0 = d
-            elif n == 1:
-                d1 = d
-            elif n == 2:
-                d2 = d
-            else:
-                if more is None:
-                    more = []
-                more.append(d)
-            n += 1
+            steps.add(a_end[i] - b_end[j])
+    d0, d1, d2, n, more = steps.d0, steps.d1, steps.d2, steps.n, steps.more
     report.moves += 1
     if report.where is not None and (a.centre is None or b.centre is None) \
             and not beyond(d0, d1, d2, n, more, report.max_deviation):

@@ -278,26 +278,23 @@ class CompensatedMoves(Position):
         mode: str | None = None
         for i in range(len(axes)):
             value = target[i]
-            r: Any
-            if value == at[i]:
-                r = rounded[i]
-            else:
-                r = num(value)
+            r: Any = rounded[i] if value == at[i] else num(value)
+            point.append(r)  # (appended: compiled, ``[0] * n`` and a store by index cost ~600 instructions a move
+            # more, a list repeated through Python; callgrind, branch simfast3)
             c: Any = r
-            if i == length_at:
-                c = num(value + offset)
-            if shifted:
-                shift = shifts.get(axes[i])
+            if i == length_at or shifted:  # (the controlled value is the programmed one but on an offset's axes)
+                shift = shifts.get(axes[i]) if shifted else None
                 if shift is not None:
                     c = num(value + shift + (offset if i == length_at else 0.0))
-            point.append(r)  # (appended: compiled, ``[0] * n`` and a store by index cost ~600 instructions a move
-            crounded.append(c)  # more, a list repeated through Python; callgrind, branch simfast3)
+                elif i == length_at:
+                    c = num(value + offset)
+                if not apart and c is not r and differs(c, r):
+                    apart = True
+            crounded.append(c)
             if not moved:  # (identity first: an axis that stays keeps its number's object; never a nan)
                 b = before[i]
                 if c is not b and differs(c, b):
                     moved = True
-            if not apart and c is not r and differs(c, r):
-                apart = True
         if kind != "rapid":  # a move it drops fixes the header's feed mode too, as ``_compensated``'s
             f = self._feed_value()
             mode = self._stated_mode()
@@ -316,41 +313,40 @@ class CompensatedMoves(Position):
         a1, a2, normal = PLANE_AXES[plane]
         offset = self.length.offset
         shifts = self.lathe_shift
-        centre = {a1: c[0], a2: c[1], normal: self.axis_value(self.at, normal)}
+        shifted = len(shifts) != 0
+        length_at = self.length_index if offset else -1
         rounded: list[float | int] = []
         crounded: list[float | int] = []
         apart = False
         axes = self.axes
-        for k in range(len(axes)):
-            axis = axes[k]
+        for k in range(len(axes)):  # (a value no offset moves is its programmed number: ``num`` once, not twice)
             value = target[k]
             r = num(value)
-            controlled = value
-            if offset and axis == LENGTH_AXIS:
-                controlled += offset
-            shift = shifts.get(axis) if shifts else None
-            if shift is not None:
-                controlled += shift
             rounded.append(r)
-            cr = num(controlled)
+            cr = r
+            shift = shifts.get(axes[k]) if shifted else None
+            if k == length_at or shift is not None:
+                controlled = value + offset if k == length_at else value
+                cr = num(controlled + shift if shift is not None else controlled)
+                if cr != r:
+                    apart = True
             crounded.append(cr)
-            if cr != r:
-                apart = True
+        normal_at = self.axis_value(self.at, normal)  # the centre on the axis normal to the plane: the start's
         written: list[float | int] = []
         cwritten: list[float | int] = []
         for axis in self.centre_axes:
-            at = centre[axis]
+            at = c[0] if axis == a1 else c[1] if axis == a2 else normal_at
             r = num(at)
             written.append(r)
-            if offset and axis == LENGTH_AXIS:
-                at += offset
-            shift = shifts.get(axis) if shifts else None
-            if shift is not None:
-                at += shift
-            cr = num(at)
+            cr = r
+            shift = shifts.get(axis) if shifted else None
+            if offset and axis == LENGTH_AXIS or shift is not None:
+                if offset and axis == LENGTH_AXIS:
+                    at += offset
+                cr = num(at + shift if shift is not None else at)
+                if cr != r:
+                    apart = True
             cwritten.append(cr)
-            if cr != r:
-                apart = True
         f = self._feed_value()
         mode = self._stated_mode()
         self.at, self.rounded, self.crounded = target, rounded, crounded

@@ -6,6 +6,8 @@ from __future__ import annotations
 
 from typing import Any, Final
 
+from mypy_extensions import i64
+
 from ..context import Context
 from ..errors import ProgramError
 from ..geometry.arcs import PLACES
@@ -48,16 +50,19 @@ def num(value: float) -> float | int:
     ``tests/test_toolpath_numbers.py`` holds it to ``round`` on any float and on near-ties."""
     y = value * _SCALE
     if -_FAST < y < _FAST:  # false for nan; an infinity is beyond
-        units = int(y)
-        if units > y:
+        units = i64(y)  # (a machine integer, |units| < 2**47: compiled, no tagged int's checks at each step)
+        whole = float(units)
+        if whole > y:
             units -= 1  # the floor
-        fraction = y - units  # exact: both below 2**47
+            whole -= 1.0
+        fraction = y - whole  # exact: both below 2**47
         if abs(fraction - 0.5) > abs(y) * _TIE:
             if fraction > 0.5:
                 units += 1
+                whole += 1.0
             if units % _UNITS == 0:
                 return units // _UNITS  # 0 for -0.0 too
-            return units / _SCALE
+            return whole / _SCALE
     r = round(value, PLACES)
     if r == 0:
         return 0

@@ -76,20 +76,20 @@ class Moves(CompensatedMoves):
         s = (at[i1], at[i2])
         e = (target[i1], target[i2])
         clockwise = m.mode == "cw"
-        offsets: dict[str, float] = {}
+        scale = self.scale
+        offsets: dict[str, float] = {}  # mm
         for axis, value in (m.center or {}).items():
             if axis not in (a1, a2):
                 raise ProgramError(f"arc centre offset along {axis} is outside the {plane} plane",
                                    self._at(block, CENTRE_LETTER.get(axis, "G")))
             if isinstance(value, Expr):
                 raise ProgramError(UNEVALUATED, self._at(block, CENTRE_LETTER.get(axis, "G")))
-            offsets[axis] = value
-        scale = self.scale
+            offsets[axis] = value * scale
         if isinstance(m.radius, Expr):
             raise ProgramError(UNEVALUATED, self._at(block, "R"))
         radius = None if m.radius is None else m.radius * scale
         try:
-            c = arc_centre(s, e, (a1, a2), radius, {a: v * scale for a, v in offsets.items()}, clockwise,
+            c = arc_centre(s, e, (a1, a2), radius, offsets, clockwise,
                            self.ctx.arc_end, scale != 1.0, scale)
         except ArcError as err:
             raise err.located(self._at(block, err.letter)) from None

@@ -32,9 +32,6 @@ LENGTH_AXIS: Final = _AXIS
 LINEAR_AXES: Final = _LINEAR
 # Final: compiled, a C constant, not a look-up in the module's dictionary (every move reads them)
 _NAN: Final = math.nan
-_A: Final = 65
-"""``ord("A")``."""
-_LETTERS: Final = 26
 PATH_CONTROL: Final = "path control"
 """The setting a path control mode is recorded as (``postproc.simulate.events.UNSIMULATED``)."""
 _INITIAL_SETTINGS = {"cutter compensation": "off", "work offset": "1", LATHE_TOOL_OFFSET: "cancel"}
@@ -80,13 +77,6 @@ class Position:
         the readers that are not hot."""
         self.index = {a: i for i, a in enumerate(self.axes)}
         """Machine axis -> its place in ``axes`` (and in ``at`` and the rounded points)."""
-        self.places: list[int] = [-1] * _LETTERS
-        """``index`` of the axes named by one letter A-Z, by the letter's place in the alphabet (-1: not an axis):
-        ``target`` reads an axis word's place by its letter's code (compiled, a few instructions), where a look-up of
-        the string cost ~130 a word (~300 a block, and as much again for each side of ``verify``)."""
-        for i, a in enumerate(self.axes):
-            if len(a) == 1 and 0 <= ord(a) - _A < _LETTERS:
-                self.places[ord(a) - _A] = i
         self.length_index = self.index.get(LENGTH_AXIS, -1)
         """The place of the tool length's axis in ``axes`` (-1: the machine has none)."""
         self.rounded: list[float | int] = [num(v) for v in self.at]
@@ -248,27 +238,39 @@ class Position:
         shift = self.shift if not machine and not incremental and len(self.shift) else None  # (tested once)
         increments = self.increments if len(self.increments) else None  # empty on a mill: tested once, not a word
         factors = self.factors
-        index = self.index
-        places = self.places
-        for axis, value in axes.items():
-            if not isinstance(value, float) and isinstance(value, Expr):  # a float first: one type test a word
+        names = self.axes
+        found = 0
+        for i in range(len(names)):  # the machine's axes first, each looked up (the words of a block are most
+            # often all axes: a look-up ~130 instructions compiled, where taking an item of ``axes.items()`` and
+            # finding its axis's place by its letter cost ~230; ``target`` 1,600 -> 1,307 a move of three words,
+            # callgrind, branch simfast8)
+            axis = names[i]
+            word = axes.get(axis)
+            if word is None or increments is not None and axis in increments:
+                continue  # (an address that is an increment is the second loop's)
+            found += 1
+            if not isinstance(word, float) and isinstance(word, Expr):  # a float first: one type test a word
                 raise ProgramError(UNEVALUATED, self._at(block, axis))
+            v = word * factors[i]
+            out[i] = at[i] + v if incremental else v + shift.get(axis, 0.0) if shift is not None else v
+        if found == len(axes):
+            return out
+        index = self.index
+        for axis, value in axes.items():  # the other words: a lathe's increments (U, W), or no axis of the machine
             real = increments.get(axis) if increments is not None else None
-            if real is not None:
-                r = index.get(real, -1)
-                if r < 0:
-                    raise ProgramError(f"axis {real} is not on this machine (axes {''.join(self.axes)})",
-                                       self._at(block, axis))
-                v = value * self.scale * (0.5 if self.diameter and real == "X" else 1.0)
-                out[r] = out[r] + v
-                continue
-            n = ord(axis) - _A if len(axis) == 1 else -1  # (a letter's place, not a look-up: ``places``)
-            i = places[n] if 0 <= n < _LETTERS else index.get(axis, -1)
-            if i < 0:
+            if real is None:
+                if axis in index:
+                    continue  # (the first loop's)
                 raise ProgramError(f"axis {axis} is not on this machine (axes {''.join(self.axes)})",
                                    self._at(block, axis))
-            v = value * factors[i]
-            out[i] = at[i] + v if incremental else v + shift.get(axis, 0.0) if shift is not None else v
+            if not isinstance(value, float) and isinstance(value, Expr):
+                raise ProgramError(UNEVALUATED, self._at(block, axis))
+            r = index.get(real, -1)
+            if r < 0:
+                raise ProgramError(f"axis {real} is not on this machine (axes {''.join(self.axes)})",
+                                   self._at(block, axis))
+            v = value * self.scale * (0.5 if self.diameter and real == "X" else 1.0)
+            out[r] = out[r] + v
         return out
 
 

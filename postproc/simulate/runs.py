@@ -20,7 +20,7 @@ from .arc_runs import _arc, _arc_record, merge_arc as merge_arc
 from .events import Event
 from .move_record import MoveRecord
 from .normal_move import Move, same_feed as _same_feed
-from .points import (_AXIS_KEYS as _AXIS_KEYS, _INF, Keys, _all_axes, _event_point, _is_axis as _is_axis, _norm,
+from .points import (_AXIS_KEYS as _AXIS_KEYS, _INF, Keys, Steps, _all_axes, _event_point, _is_axis as _is_axis, _norm,
                      _real, _record_point, beyond as beyond, key_index as key_index, norm as norm,
                      point_value as point_value)
 
@@ -179,6 +179,8 @@ class Normaliser:
         from their lists (``_extends``, in ``pull``). False for an arc or any other run."""
         self.s0 = self.s1 = self.s2 = 0.0
         self.u0 = self.u1 = self.u2 = 0.0
+        self.steps = Steps()
+        """Where a move's steps are collected (``points.Steps``) but for a point of three axes in the run's keys."""
 
     def __iter__(self) -> Normaliser:
         return self
@@ -266,18 +268,11 @@ class Normaliser:
                 d1 = e1 - s1
                 d2 = e2 - s2
             else:
+                steps = self.steps
+                steps.clear()
                 for i in range(n):
-                    d = end[i] - (start[i] if shared else point_value(start_keys, start, keys[i], i))
-                    if i == 0:
-                        d0 = d
-                    elif i == 1:
-                        d1 = d
-                    elif i == 2:
-                        d2 = d
-                    else:
-                        if more is None:
-                            more = []
-                        more.append(d)
+                    steps.add(end[i] - (start[i] if shared else point_value(start_keys, start, keys[i], i)))
+                d0, d1, d2, more = steps.d0, steps.d1, steps.d2, steps.more
             square = d0 * d0 + d1 * d1 + d2 * d2
             if more is not None:
                 for d in more:
