@@ -13,13 +13,29 @@ from __future__ import annotations
 
 import math
 from math import asin, atan2, hypot  # (no primitive in mypyc: a global's look-up, not the module's attribute)
-from typing import TYPE_CHECKING, Final
+from typing import Final, Protocol
 
 from .arc_paths import ArcPath, deviation
 from .arcs import arc_sweep
 
-if TYPE_CHECKING:
-    from .arc_end import ArcEndRule  # (a record of an interpreted module: its fields are read by name)
+
+
+class ArcEndLimits(Protocol):
+    """The fields of a rule this arithmetic reads (``arc_end.ArcEndRule``, a record of an interpreted module: its
+    fields are read by name). A protocol rather than an import of the record, which imports this module."""
+
+    @property
+    def metric(self) -> float: ...
+    @property
+    def inch(self) -> float: ...
+    @property
+    def relative(self) -> float: ...
+    @property
+    def ceiling(self) -> float: ...
+    @property
+    def of_start(self) -> bool: ...
+    @property
+    def of_centre_shift(self) -> bool: ...
 
 
 def centre_shift(r_start: float, r_end: float, chord: float) -> float:
@@ -30,7 +46,7 @@ def centre_shift(r_start: float, r_end: float, chord: float) -> float:
     return abs(r_start * r_start - r_end * r_end) / (2.0 * chord)
 
 
-def rule_limit(rule: "ArcEndRule", r_start: float, r_end: float, inch: bool, chord: float = 0.0) -> float:
+def rule_limit(rule: ArcEndLimits, r_start: float, r_end: float, inch: bool, chord: float = 0.0) -> float:
     """``ArcEndRule.limit``: the largest difference of radii (with ``of_centre_shift``: move of the centre) ``rule``
     accepts for an arc of these radii and this chord (program units)."""
     absolute = rule.inch if inch else rule.metric
@@ -49,13 +65,13 @@ def rule_limit(rule: "ArcEndRule", r_start: float, r_end: float, inch: bool, cho
     return max(absolute, share)
 
 
-def rule_judged(rule: "ArcEndRule", r_start: float, r_end: float, chord: float = 0.0) -> float:
+def rule_judged(rule: ArcEndLimits, r_start: float, r_end: float, chord: float = 0.0) -> float:
     """``ArcEndRule.judged``: what ``rule``'s limits bound for an arc of these radii and this chord: the difference
     of radii, or (with ``of_centre_shift``) the centre's move."""
     return centre_shift(r_start, r_end, chord) if rule.of_centre_shift else abs(r_start - r_end)
 
 
-def rule_allows(rule: "ArcEndRule", r_start: float, r_end: float, inch: bool, chord: float = 0.0) -> bool:
+def rule_allows(rule: ArcEndLimits, r_start: float, r_end: float, inch: bool, chord: float = 0.0) -> bool:
     """``ArcEndRule.allows``: whether the controller runs an arc with these start and end radii and this chord
     (program units; the chord matters only ``of_centre_shift``)."""
     return rule_judged(rule, r_start, r_end, chord) <= rule_limit(rule, r_start, r_end, inch, chord) * (1.0 + 1e-9)
