@@ -302,3 +302,22 @@ def test_linuxccs_threading_with_computed_g33_words_copies_byte_for_byte() -> No
     report = verify_lines(io.StringIO(text), io.StringIO(text), file_in="in.ngc", file_out="out.ngc",
                           source="linuxcnc", target="linuxcnc", setup=setup, allow_ignored=True)
     assert report.ok and report.max_deviation == 0.0 and report.moves > 20, report.summary()
+
+
+def test_computed_g33_words_to_another_dialect_are_refused_as_a_translation_limit() -> None:
+    """The same ``threading.ngc`` to Fanuc: the computed ``G33`` words cannot be carried, so the translation is
+    refused, located, as a limit of the translation (``UnsupportedError``), not as a fault of the program: LinuxCNC
+    runs the source (the copy above; the held-back corpus counted a ``ProgramError`` here as a translation that
+    calls a valid source invalid)."""
+    from postproc.errors import UnsupportedError
+
+    root = Path(__file__).resolve().parents[1]
+    text = (root / "tests" / "heldout" / "linuxcnc" / "threading.ngc").read_text()
+    setup = load_setup(str(root / "tests" / "heldout" / "setups" / "linuxcnc_lathe_radius.xml"))
+    with pytest.raises(ErrorList) as caught:
+        translate(io.StringIO(text), io.StringIO(), file="threading.ngc", source="linuxcnc", target="fanuc",
+                  setup=setup)
+    errors = caught.value.errors
+    assert errors and all(isinstance(e, UnsupportedError) for e in errors), [type(e) for e in errors]
+    assert ("threading.ngc:36:1: error: a computed word in G33 is not supported (write the numbers)"
+            in [str(e) for e in errors]), [str(e) for e in errors]

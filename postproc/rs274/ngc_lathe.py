@@ -35,7 +35,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from postproc.context import Context
-from postproc.errors import ProgramError
+from postproc.errors import ProgramError, UnsupportedError
 from postproc.interp.variables import RUN_INTERPRETER_KEY
 from postproc.ir.expr import Expr
 from postproc.ir import Block, Motion
@@ -193,7 +193,8 @@ def read_thread(block: Block, ctx: Context, motion: Motion, values: dict[str, An
     if isinstance(along, Expr) or any(isinstance(v, Expr) for v in motion.axes.values()):
         if ctx.program_mode == "keep" and RUN_INTERPRETER_KEY not in ctx.run_data:
             return  # a plain copy to the dialect itself: the line goes as written, its lead known where it runs
-        raise ProgramError(f"a computed word in {name} is not supported (write the numbers)", ctx.at(block, col))
+        raise UnsupportedError(f"a computed word in {name} is not supported (write the numbers)", ctx.at(block, col))
+        # (the program is valid NGC, LinuxCNC runs it: what is refused is this translation, not the source)
     if along <= 0:
         raise ProgramError(f"{name} K{along:g}: the distance per revolution must be positive",
                            ctx.at(block, ctx.column_of(block, "K")))
