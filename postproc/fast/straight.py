@@ -147,6 +147,8 @@ class StraightLane(Lane):
         move of another is left to the general path, which refuses it."""
         self.per_rev_checked = bool(writer.PER_REV_NEEDS_SPEED)
         """As ``CopyLane.per_rev_checked``."""
+        self.max_number = writer.MAX_BLOCK_NUMBER
+        """A block number above it (when not 0) is the general path's to drop (``sequence_words``)."""
 
     def write(self, block: Block) -> str | None:
         """The block's text, or None."""
@@ -199,8 +201,8 @@ class StraightLane(Lane):
             letter, number = words[0]
             read_number = values.get("N")  # (an int: compiled, compared unboxed)
             if letter != "N" or type(read_number) is not int or read_number != sequence.number \
-                    or number[0] == "0" and len(number) > 1:
-                return None  # (N010 is written N10)
+                    or number[0] == "0" and len(number) > 1 or self.max_number and read_number > self.max_number:
+                return None  # (N010 is written N10; a number the target refuses is dropped)
             at = 1
             head = len(number) + 1
         coded = at < len(words) and words[at][0] == "G"  # the block's own motion code: it is rewritten
