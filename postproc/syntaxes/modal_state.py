@@ -313,7 +313,8 @@ def _refuse_unknown_start(block: Block, ctx: Context, motion: Motion, axis: str,
                            f"since the program start or since a move or offset change the reading cannot follow): "
                            f"the {target} controller checks the arc from wherever the machine stands and refuses "
                            f"it almost everywhere; program {axis} before the arc",
-                           ctx.at(block, ctx.column_of(block, letter)))
+                           ctx.at(block, ctx.column_of(block, letter)), needs=axis)
+    # (needs: after a refused line that programmed the axis, the unknown start is that refusal's consequence)
 
 
 def _target_accepts(block: Block, ctx: Context, motion: Motion, target: tuple[str, ArcEndRule],
