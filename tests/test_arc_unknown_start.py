@@ -50,16 +50,25 @@ def test_an_arc_from_an_unknown_start_is_refused_where_it_was_read(source: str, 
 
 
 @needs_rs274
-@pytest.mark.parametrize("arc", ["G2 X20. I5. J0.", "G91 G2 X10. Y0. I5. J0.", "G2 X20. Y0. I5. J0. Z-2."])
+@pytest.mark.parametrize("arc", ["G2 X20. I5. J0.", "G91 G2 X10. Y0. I5. J0."])
 def test_an_arc_whose_shape_does_not_depend_on_the_unknown_start_runs(arc: str) -> None:
     """Y kept (absent or incremental): the same half circle from any Y; rs274 runs the translation."""
-    program = f"G21 G90 G17\nG1 X10. Z-1. F100.\n{arc}\nM30\n"
-    if "Y0." in arc and "G91" not in arc:  # an absolute Y from the unknown start: refused even where it fits
-        with pytest.raises(ErrorList):
-            _translate(program)
-        return
-    text = _translate(program)
-    run_rs274(text)  # raises RS274Error if LinuxCNC refuses it
+    run_rs274(_translate(f"G21 G90 G17\nG1 X10. Z-1. F100.\n{arc}\nM30\n"))  # RS274Error if refused
+
+
+def test_an_absolute_end_that_fits_one_start_is_refused_too() -> None:
+    """``Y0.`` fits only a machine standing at Y0 (where rs274 starts, and the set-up's start for the
+    simulation): the real controller stands wherever the last job left it, so the translation asks for Y."""
+    with pytest.raises(ErrorList, match="program Y before the arc"):
+        _translate("G21 G90 G17\nG1 X10. Z-1. F100.\nG2 X20. Y0. I5. J0.\nM30\n")
+
+
+def test_after_a_refused_arc_the_next_is_its_consequence() -> None:
+    """The refused arc leaves Y unknown: the next arc's unknown start is not a second error."""
+    program = "G21 G90 G17\nG0 X10. Y0.\nG1 F100.\nG2 X-10.02 Y0. I-10. J0.\nG2 X0. Y10.01 I10.01 J0.\nM30\n"
+    with pytest.raises(ErrorList) as info:
+        _translate(program, "linuxcnc", "fanuc")
+    assert [str(e).split(": error: ")[0] for e in info.value.errors] == ["in.nc:4:16"]
 
 
 @needs_rs274
