@@ -10,7 +10,7 @@ from typing import Callable, Iterable, Iterator, TextIO
 from . import native
 native.install()  # the compiled hot path, before any of its modules is imported
 
-from .geometry.arc_end import SPIRAL, TARGET_ARC_END
+from .geometry.arc_end import SPIRAL, TARGET_ARC_END, UNKNOWN_START_TARGET
 from .lowering.feed_first import check_blocks
 from .interp.control import GotoLabel
 from .dialect import Dialect
@@ -83,6 +83,8 @@ def _translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, tar
             ctx.run_data[TARGET_OMITS_VACANT] = _OmitsVacantWords(dst, setup)
             ctx.run_data[EVALUATE_KEY] = options.transform is not None
             ctx.run_data[POINT_BY_POINT_KEY] = options.active()
+            if src.NAME != dst.NAME:  # (a copy runs as its source does, wherever the machine stands)
+                ctx.run_data[UNKNOWN_START_TARGET] = dst.NAME
             target_rule = dst.arc_end_rule(setup)
             if arcs is None and ctx.arc_end.runs == SPIRAL and not target_rule.covers(ctx.arc_end):
                 # (a source that moves the centre has its arcs written about the moved one: settle_arc_ends)

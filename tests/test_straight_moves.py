@@ -137,7 +137,8 @@ def lines(draw: st.DrawFn) -> list[str]:
         out.insert(0, "%")
     for i in range(draw(st.integers(min_value=1, max_value=12))):
         kind = draw(st.sampled_from(["move"] * 6 + ["coded"] * 2 + ["arc", "arc", "mode", "units", "rapid", "cycle"]))
-        number = draw(st.sampled_from([f"N{10 * (i + 1)} ", f"N0{i + 1} ", ""]))
+        number = draw(st.sampled_from([f"N{10 * (i + 1)} ", f"N0{i + 1} ", "", f"N{10_000_000 + i} "]))  # (grbl's
+        # limit is 10,000,000: a larger number is the general path's to drop)
         if kind == "arc":
             out.extend(draw(arcs(number)))
             out.append(draw(st.sampled_from(["G17 G1", "G17 G0"])))  # then straight moves again
@@ -189,6 +190,7 @@ def _no_lane(writer: Writer) -> None:
 @settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(program=lines())
 @example(program=["G21", "G90", "G1 F100.", "N10 X1.5 Y-2.25 Z0.001 F1200."])
+@example(program=["G21", "G90", "G1 F100.", "N10000001 X1.5 Y-2.25 Z0.001 F1200."])  # above grbl's limit
 @example(program=["G21", "G91", "G1 F100.", "X0.0000001", "X1.5"])
 @example(program=["G21 G90", "G1 X1. F100.", "%"])  # a motion code in the first block: LinuxCNC sees it open
 @example(program=["(SETUP)", "G1 X1. F100.", "%"])

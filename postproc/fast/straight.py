@@ -193,6 +193,8 @@ class StraightLane(Lane):
         comparisons, where a look in a set cost ~75 instructions a word compiled: grbl, grblHAL)."""
         self.per_rev_checked = bool(writer.PER_REV_NEEDS_SPEED)
         """As ``CopyLane.per_rev_checked``."""
+        self.max_number = writer.MAX_BLOCK_NUMBER
+        """A block number above it (when not 0) is the general path's to drop (``sequence_words``)."""
 
     def write(self, block: Block) -> str | None:
         """The block's text, or None."""
@@ -248,8 +250,8 @@ class StraightLane(Lane):
             end = _word_end(text, 0, size)
             read_number = values.get("N")  # (an int: compiled, compared unboxed)
             if end < 0 or text[0] != "N" or type(read_number) is not int or read_number != sequence.number \
-                    or end > 2 and text[1] == "0":
-                return None  # (N010 is written N10)
+                    or end > 2 and text[1] == "0" or self.max_number and read_number > self.max_number:
+                return None  # (N010 is written N10; a number the target refuses is dropped by the general path)
             at = end + 1
             head = end
         coded = at < size and text[at] == "G"  # the block's own motion code: it is rewritten

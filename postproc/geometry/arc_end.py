@@ -158,6 +158,11 @@ class ArcEndRule:
         return moved_centre(self.runs == NEAREST_CENTRE, s, e, c)
 
 
+UNKNOWN_START_TARGET: Final = "unknown_start_target"
+"""``ctx.run_data`` key of a translation to another dialect: the target's name. The reading pipeline's arc check
+then refuses an arc whose absolute end word in its plane meets a start unknown on that axis: whether the target
+accepts its radius depends on where the machine happens to stand (``postproc.syntaxes.modal_state``)."""
+
 TARGET_ARC_END: Final = "target_arc_end"
 """``ctx.run_data`` key of a translation whose target's rule does not cover the source's
 (``ArcEndRule.covers``): (the target's name, its rule). The reading pipeline's arc check then refuses an arc

@@ -47,8 +47,14 @@ class SectionWords(NumberWriter):
     modal-group error): a block that writes a motion code leaves the cancel out, the motion code ends
     the cycle by itself."""
 
+    MAX_BLOCK_NUMBER: ClassVar[int] = 0
+    """The largest block number the controller takes (0: any the source has); a larger one is dropped with a
+    warning (``sequence_words``): a block number is a label, it moves nothing."""
+
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
         super().__init__(ctx, source_dialect, target)
+        self.numbers_dropped = False
+        """A block number above ``MAX_BLOCK_NUMBER`` was dropped (warned once a run)."""
         self.codes = self.table()
         """The code table written (a dialect with one per machine type picks it from the context)."""
         self.named_numbered = False
@@ -93,6 +99,17 @@ class SectionWords(NumberWriter):
         return ["/" if s.level == 1 else f"/{s.level}"]
 
     def sequence_words(self, s: Any, block: Block) -> list[str]:
+        """``N<number>``, or nothing for a number the controller refuses (``MAX_BLOCK_NUMBER``): the block runs
+        the same without its label, where a refused line would stop the program."""
+        limit = self.MAX_BLOCK_NUMBER
+        if limit and s.number > limit:
+            if not self.numbers_dropped:
+                self.numbers_dropped = True
+                self.ctx.diagnostics.warn(
+                    f"block number N{s.number} is above {limit}, the largest the {self.DIALECT} controller takes: "
+                    f"dropped (here and on any later such block; renumber with --renumber to keep them)",
+                    self.ctx.at(block))
+            return []
         return [f"N{s.number}"]
 
     def code(self, kind: str, arg: object, what: str, block: Block) -> str:

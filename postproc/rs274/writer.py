@@ -415,7 +415,7 @@ class WordWriter(MotionWords):
                 (tail if after_motion(key, section) else head)[key] = section
         note = self.comment_line(f"{compound.term} from line {block.line}: {self.source_text(block)}")
         if len(head) == 1 and "Sequence" in head:
-            note = " ".join(self.sequence_words(head["Sequence"], block)) + " " + note
+            note = " ".join(self.sequence_words(head["Sequence"], block) + [note])  # (no word: a dropped number)
         elif head:
             first = Block(block.line, None, "\n")
             first.sections = head

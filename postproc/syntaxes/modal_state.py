@@ -18,7 +18,7 @@ from typing import Final, NoReturn, cast
 
 from postproc.block_rules import ZERO_FEED, ArcError, arc_centre, check_values, needs_feed, per_rev_problem
 from postproc.interp.control import ASSIGN, CONTROL
-from postproc.geometry.arc_end import NEAREST_CENTRE, SPIRAL, TARGET_ARC_END, ArcEndRule
+from postproc.geometry.arc_end import NEAREST_CENTRE, SPIRAL, TARGET_ARC_END, UNKNOWN_START_TARGET, ArcEndRule
 from postproc.geometry.arc_end_math import circle_spiral_gap, rule_allows
 from postproc.errors import ProgramError, UnsupportedError
 from postproc.ir.event_order import MOVING, after_motion
@@ -240,7 +240,10 @@ def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
         # An axis the block does not move, or moves by an increment, ends where it starts plus its word:
         # the arc's shape does not depend on where that is. An absolute word from an unknown start does.
         if not incremental and (s1 is None and a1 in axes or s2 is None and a2 in axes):
-            return
+            target = ctx.run_data.get(UNKNOWN_START_TARGET)
+            if target is None:
+                return  # read for itself (the simulator starts at the set-up's start) or copied as written
+            _refuse_unknown_start(block, ctx, motion, a1 if s1 is None and a1 in axes else a2, str(target))
         s1 = 0.0 if s1 is None else s1
         s2 = 0.0 if s2 is None else s2
     e1, e2 = axes.get(a1), axes.get(a2)
@@ -296,6 +299,23 @@ def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
     if target is not None and radius is None and centre is not None:
         c1, c2 = s1 + offsets.get(a1, 0.0), s2 + offsets.get(a2, 0.0)
         _target_accepts(block, ctx, motion, target, (s1, s2), (e1, e2), (c1, c2), scale)
+
+
+def _refuse_unknown_start(block: Block, ctx: Context, motion: Motion, axis: str, target: str) -> NoReturn:
+    """Refuse a translated arc that ends at an absolute ``axis`` from a start unknown on it: the target checks
+    its radius (or an R arc's chord) from wherever the machine stands, and accepts it about one such place only
+    [V: rs274 refuses ``G1 X10 Z-1`` then ``G2 X20 Y5 I5 J0`` from Y0, "Radius to end of arc differs from radius
+    to start"]; the source's controller is no different, so no output is sure to run."""
+    for moved in motion.axes:
+        ctx.state.position[moved] = None
+    del block.sections["Motion"]
+    letter = axis if axis in motion.axes else "G"
+    raise UnsupportedError(f"the arc ends at an absolute {axis} from a start whose {axis} is unknown (not programmed "
+                           f"since the program start or since a move or offset change the reading cannot follow): "
+                           f"the {target} controller checks the arc from wherever the machine stands and refuses "
+                           f"it almost everywhere; program {axis} before the arc",
+                           ctx.at(block, ctx.column_of(block, letter)), needs=axis)
+    # (needs: after a refused line that programmed the axis, the unknown start is that refusal's consequence)
 
 
 def _target_accepts(block: Block, ctx: Context, motion: Motion, target: tuple[str, ArcEndRule],

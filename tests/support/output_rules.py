@@ -96,8 +96,8 @@ def problems(target: str, text: str, setup: MachineSetup, source: str | None = N
     if checker is None:
         return []
     if source is not None and setup.input.machine_type != "lathe":
-        from postproc.plugins import default_registry
-        if default_registry().dialect(source).reads_lathe(setup):
+        registry = _registry()  # (a writer's own DIALECT, e.g. the neutral IR's, is no installed dialect)
+        if source in registry.dialects and registry.dialect(source).reads_lathe(setup):
             setup = copy.copy(setup)
             setup.input = dataclasses.replace(setup.input, machine_type="lathe")
     controller = setup.controller
@@ -110,7 +110,19 @@ def problems(target: str, text: str, setup: MachineSetup, source: str | None = N
     return found
 
 
-def _check(target: str, text: str, setup: MachineSetup, source: str) -> None:
+_REGISTRY: list[Any] = []
+"""The default registry, as ``install`` found it: a test that puts the global one out of reach (to show a run
+uses its own) does not meet it in the check."""
+
+
+def _registry() -> Any:
+    if not _REGISTRY:
+        from postproc.plugins import default_registry
+        _REGISTRY.append(default_registry())
+    return _REGISTRY[0]
+
+
+def _check(target: str, text: str, setup: MachineSetup, source: str | None = None) -> None:
     found = problems(target, text, setup, source=source)  # (a GSK program's grblHAL output runs in lathe mode)
     if found:
         listing = "\n".join(f"{n:4} | {line}" for n, line in enumerate(text.splitlines(), 1))
@@ -120,8 +132,7 @@ def _check(target: str, text: str, setup: MachineSetup, source: str) -> None:
 
 def install() -> None:
     """Wrap the ``write`` of the writers whose controllers have a checker (once)."""
-    from postproc.plugins import default_registry
-    registry = default_registry()
+    registry = _registry()
     for name in CHECKERS:
         writer = registry.dialects[name].WRITER if name in registry.dialects else None
         if writer is not None:
