@@ -13,29 +13,13 @@ from __future__ import annotations
 
 import math
 from math import asin, atan2, hypot  # (no primitive in mypyc: a global's look-up, not the module's attribute)
-from typing import Final, Protocol
+from typing import TYPE_CHECKING, Final
 
 from .arc_paths import ArcPath, deviation
 from .arcs import arc_sweep
 
-
-
-class ArcEndLimits(Protocol):
-    """The fields of a rule this arithmetic reads (``arc_end.ArcEndRule``, a record of an interpreted module: its
-    fields are read by name). A protocol rather than an import of the record, which imports this module."""
-
-    @property
-    def metric(self) -> float: ...
-    @property
-    def inch(self) -> float: ...
-    @property
-    def relative(self) -> float: ...
-    @property
-    def ceiling(self) -> float: ...
-    @property
-    def of_start(self) -> bool: ...
-    @property
-    def of_centre_shift(self) -> bool: ...
+if TYPE_CHECKING:
+    from .arc_end_fields import ArcEndLimits  # (only a type: nothing to import at run time)
 
 
 def centre_shift(r_start: float, r_end: float, chord: float) -> float:
