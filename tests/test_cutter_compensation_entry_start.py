@@ -116,3 +116,17 @@ def test_after_a_refused_stretch_a_later_one_is_left_to_the_target_writer() -> N
     messages = [str(e) for e in info.value.errors]
     assert messages[0].startswith("t.nc:4:1: error: cutter compensation without its register"), messages
     assert all("t.nc:4:" in m or "cannot express cutter radius compensation" in m for m in messages), messages
+
+
+def test_a_straight_move_after_a_kept_arc_gives_the_start_point() -> None:
+    """Hand-derived: the arc (kept by the resolver) ends at (10, 0), the straight move after it (noted past the
+    resolver by the lowering loop, ``ProgrammedPoint.passing``) at (12, 3), later, so it wins: the entry move of
+    tool 2 (radius 2) along +X from (12, 3) to (30, 3) ends square to it on the left, (30, 5). Then an arc after a
+    noted move (20, 8): the arc goes after it, to (25, 13), where the entry to (40, 13) starts: it ends at (40, 15)."""
+    text = ("G21 G90 G17 G0 X0. Y0. Z5.\nG2 X10. Y0. I5. J0. F100.\nG1 X12. Y3.\nG41 D2 G1 X30. F100.\nX35.\n"
+            "G40 X36.\nG1 X20. Y8.\nG2 X25. Y13. I5. J0.\nG41 D2 G1 X40.\nX45.\nG40 X46.\nM30\n")
+    out = _translate(text, "grbl")
+    assert "X30. Y5." in out and "X40. Y15." in out, out
+    report = verify_lines(io.StringIO(text), io.StringIO(out), file_in="t.nc", file_out="o", source="fanuc",
+                          target="grbl", setup=SETUP)
+    assert report.ok and report.max_deviation == 0, report.summary()

@@ -27,7 +27,7 @@ from ..compensation.geometry_for import cutter_for
 from ..compensation.rules import CutterRules
 from ..compensation.tool_table import ToolTable
 from ..interp.control import LABEL
-from .move_words import X as _X, Y as _Y, Z as _Z
+from .move_words import X as _X, Y as _Y, Z as _Z, NotedPoint, move_words
 from .point_after import RETURNS, compound_end, cycle_end, loses_after, unknown_axes
 from .rule_trial import RuleTrial
 
@@ -101,6 +101,10 @@ class ProgrammedPoint:
         self.noted_x = 0.0
         self.noted_y = 0.0
         self.noted_z = 0.0
+        self.passing = NotedPoint(move_words(ctx))
+        """The straight moves of X, Y and Z numbers the lowering loop noted past the resolution (its ``point``, while it
+        would only keep them: ``cutter_resolver.Resolution.follow``), program units, later than every ``kept`` move:
+        ``_note`` and ``_settle`` bring them in after the kept moves (``_passed``)."""
         self.at: tuple[float, float] = (0.0, 0.0)
         """The controlled point in the plane the last released move ends at, mm."""
         self.at_normal = 0.0
@@ -128,6 +132,8 @@ class ProgrammedPoint:
     def _note(self, motion: Motion) -> None:
         """A plain absolute move while no compensation is on: kept, read only when something asks where the
         program stands (``_settle``), or when ``KEPT`` moves wait (``_fold``)."""
+        if self.passing.noted:
+            self._passed()  # (the moves the loop noted went before this one)
         kept = self.kept
         kept.append(motion)
         if len(kept) >= KEPT:
@@ -177,11 +183,31 @@ class ProgrammedPoint:
                         self.unknown |= _Z
         kept.clear()
 
+    def _passed(self) -> None:
+        """The moves the loop noted (``passing``) into the noted numbers, in mm, after the kept moves (folded first):
+        as ``_fold`` would leave them had each been kept (a number: known; the scale is theirs, as the kept ones')."""
+        if self.kept:
+            self._fold()
+        passing = self.passing
+        bits = passing.noted
+        passing.noted = 0
+        scale = self.scale
+        self.noted |= bits
+        self.unknown &= ~bits
+        if bits & _X:
+            self.noted_x = passing.x * scale
+        if bits & _Y:
+            self.noted_y = passing.y * scale
+        if bits & _Z:
+            self.noted_z = passing.z * scale
+
     def _settle(self) -> None:
         """Bring the axes the plain moves programmed into ``pos`` (an absolute number also ends an axis's frame of
         its own, ``floating``)."""
         if self.kept:
             self._fold()
+        if self.passing.noted:
+            self._passed()
         noted = self.noted
         if not noted:
             return

@@ -339,7 +339,17 @@ class Resolution(BlockStep):
         self.radii = not resolver.diameters
         """X is a radius in the blocks: the common block's move is tracked here (else by ``_track``)."""
         self.last: Block | None = None
-        """The program's last block: where an error found at its end (``finish``) is located."""
+        """The program's last block the resolution took: where an error found at its end (``finish``) is located
+        (a straight move the loop noted past it, ``follow``, leaves nothing queued that could fail there)."""
+        self.follow()
+
+    def follow(self) -> None:
+        """``point`` (``BlockStep.point``) as the run stands: while an idle resolver only keeps a plain move
+        (absolute, X a radius, no feed to write back in inverse time), a straight move of X, Y and Z numbers is noted
+        by the loop (``ProgrammedPoint.passing``) instead of taken (~900 instructions a block compiled through
+        ``take_move``: every grbl and grblHAL translation, callgrind)."""
+        r = self.resolver
+        self.point = r.passing if self.idle and self.radii and r.absolute and not r.per_minute else None
 
     def take(self, block: Block) -> list[Block] | None:
         return self._take(block, False)
@@ -379,6 +389,7 @@ class Resolution(BlockStep):
                 r._track(block)
             if r.per_minute:
                 r._back_to_inverse_time(block)
+                self.follow()
             return None
         r._settle()
         if not r.failed and r.trial_rules is not None:
@@ -407,6 +418,7 @@ class Resolution(BlockStep):
         if r.out:
             made.extend(r.out)
             r.out.clear()
+        self.follow()
         return made
 
     def finish(self) -> list[Block]:

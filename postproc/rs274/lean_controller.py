@@ -40,6 +40,7 @@ from ..ir.keys import watches_none
 from ..ir.state import PLANE_AXES
 from .order_of_execution import split_stops_after_motion, stops_after_motion
 from ..lowering.lower import BlockStep, LoweringStep
+from ..lowering.move_words import NotedPoint, move_words
 
 
 def pause_for_tool_change(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
@@ -78,7 +79,7 @@ class CloseFullCircles(LoweringStep):
     def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
         if ctx.dialect == target.NAME:
             return None
-        return _CloseFullCircles()
+        return _CloseFullCircles(ctx)
 
 
 close_full_circles = CloseFullCircles()
@@ -86,11 +87,12 @@ close_full_circles = CloseFullCircles()
 
 @mypyc_attr(allow_interpreted_subclasses=True)
 class _CloseFullCircles(BlockStep):
-    """One run: a move is its business (an arc may be a full circle to close)."""
+    """One run: a move is its business (an arc may be a full circle to close), a straight one not (``passed``)."""
 
-    def __init__(self) -> None:
+    def __init__(self, ctx: Context) -> None:
         super().__init__()
         self.circles = _FullCircles()
+        self.point = passed(ctx)
 
     def take(self, block: Block) -> list[Block] | None:
         back = self.circles.close(block)  # before the block goes on: the next step sees it closed
@@ -121,12 +123,14 @@ lower_for_lean_controller = LowerForLeanController()
 
 @mypyc_attr(allow_interpreted_subclasses=True)
 class _Lean(BlockStep):
-    """One run of the four: a move is its business (an arc may be a full circle to close)."""
+    """One run of the four: a move is its business (an arc may be a full circle to close), a straight one not
+    (``passed``)."""
 
     def __init__(self, ctx: Context, pause: bool) -> None:
         super().__init__()
         self.pauses = _ToolChangePauses(ctx) if pause else None
         self.circles = _FullCircles()
+        self.point = passed(ctx)
 
     def take(self, block: Block) -> list[Block] | None:
         sections = block.sections
@@ -165,6 +169,15 @@ class _Lean(BlockStep):
                 made.extend(_stops_split(first, circles))
             made.extend(_stops_split(one, circles))
         return made
+
+
+def passed(ctx: Context) -> NotedPoint:
+    """The ``BlockStep.point`` of a step that a straight move alone in its block leaves as it is, in every state
+    (``_Lean``, ``_CloseFullCircles``: only an arc may be a full circle to close): the lowering loop notes such a
+    move of X, Y and Z numbers there, read once for all the steps that follow the point, instead of calling the
+    step's ``take_move`` (which looked at it to give None: ~280 instructions a block compiled, every grbl and
+    grblHAL translation, callgrind). Nothing reads what is noted there."""
+    return NotedPoint(move_words(ctx))
 
 
 _EXPANSION_ONLY: Final = frozenset(("CompoundMotion", "Sequence", "Comments"))
