@@ -75,3 +75,19 @@ def test_after_a_refused_arc_the_next_is_its_consequence() -> None:
 def test_an_arc_after_y_is_programmed_runs() -> None:
     program = "G21 G90 G17\nG1 X10. Y5. Z-1. F100.\nG2 X20. Y5. I5. J0.\nM30\n"
     run_rs274(_translate(program))
+
+
+SUB_FIRST = ("o100 sub\nG2 X10 Y0 I5 J0 F100\no100 endsub\nG17 G21 G90 G0 X0 Y0 Z5\nG1 Z-1 F100\no100 call\n"
+             "M2\n")
+"""A subprogram defined before the moves that call it: in the order of the text its arc comes first, with X and Y
+unknown; run, it starts at X0 Y0, on its circle (radius 5 at both ends, by hand)."""
+
+
+@needs_rs274
+def test_an_arc_read_before_the_moves_that_run_first_is_not_refused() -> None:
+    """Where the text is not the order of execution (a call, a loop, a computed word), the start is the run's to
+    know: the arc is not refused on the text's order (it was, for this valid LinuxCNC program, before the check
+    left such programs to the run), and rs274 runs the translation."""
+    run_rs274(SUB_FIRST)  # the source is valid LinuxCNC
+    out = _translate(SUB_FIRST, source="linuxcnc", target="fanuc")
+    assert "G02 X10. Y0. I5. J0." in out

@@ -241,8 +241,10 @@ def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
         # the arc's shape does not depend on where that is. An absolute word from an unknown start does.
         if not incremental and (s1 is None and a1 in axes or s2 is None and a2 in axes):
             target = ctx.run_data.get(UNKNOWN_START_TARGET)
-            if target is None:
-                return  # read for itself (the simulator starts at the set-up's start) or copied as written
+            if target is None or state.symbolic or state.computes:
+                return  # read for itself (the simulator starts at the set-up's start) or copied as written; or
+                # the text is not the order of execution or its positions compute (a loop, a call, a computed
+                # word): where the tool stands is the run's to know, which checks the arc as it flattens or keeps
             _refuse_unknown_start(block, ctx, motion, a1 if s1 is None and a1 in axes else a2, str(target))
         s1 = 0.0 if s1 is None else s1
         s2 = 0.0 if s2 is None else s2
