@@ -128,3 +128,71 @@ def test_a_polar_word_stays_an_error_for_grbl() -> None:
     with pytest.raises(ErrorList) as info:
         list(toolpath_events(io.StringIO("G21 G0 @5 ^10\n", newline=""), file="t.nc", dialect="grbl"))
     assert "t.nc:1:8: error: unexpected" in str(info.value.errors[0])
+
+
+def _copy(source: str, renumber: str | None = None, normalize: bool = False) -> str:
+    from postproc.setup.machine_setup import MachineSetup
+    setup = MachineSetup()
+    if renumber is not None:
+        start, step = (int(n) for n in renumber.split(","))
+        setup.output.renumber_start, setup.output.renumber_step = start, step
+    setup.output.normalize = normalize
+    out = io.StringIO(newline="")
+    translate(io.StringIO(source, newline=""), out, file="t.ngc", source="linuxcnc", target="linuxcnc", setup=setup)
+    return out.getvalue()
+
+
+COPIED_AS_WRITTEN = {
+    "a computed angle in a G91 cycle": "G20 G90 G0 X2 Y0 Z0\nG91 G81 ^[360/17] R.1 Z-0.5 L17\nG90 G80\nM2\n",
+    "a computed radius from a parameter": "G21 G90 G0 X10 Y0 Z1\n#1 = 5\nG1 @#1 ^30 F100\nG1 ^60\nM2\n",
+    "a G91 cycle whose L repeats turn": "G21 G90 G0 X20 Y0 Z5\nG91 G98 G81 R-3 Z-5 ^72 L5 F100\nG90 G80\nM2\n",
+    "polar words after a computed end point": "G21 G90 G0 X10 Y0 Z1\nG1 X#2 Y0 F100\nG91 G1 ^10\nG90\nM2\n",
+}
+
+
+@pytest.mark.parametrize("name", COPIED_AS_WRITTEN)
+def test_a_polar_line_known_only_when_it_runs_is_copied_as_written(name: str) -> None:
+    """A copy to LinuxCNC is byte for byte: a polar line whose end point is computed where the program runs (a
+    computed word, a G91 cycle turning each repeat, a start known only then) was refused (19:9: "a computed
+    polar coordinate (^) is known only when the program runs") or written as several blocks."""
+    source = COPIED_AS_WRITTEN[name]
+    assert _copy(source) == source
+
+
+def test_the_held_out_polar_program_is_copied_byte_for_byte() -> None:
+    from pathlib import Path
+    path = Path(__file__).parent / "heldout" / "linuxcnc" / "polar.ngc"
+    source = path.read_bytes().decode()
+    assert _copy(source) == source
+    lines = [line.strip() for line in _copy(source, normalize=True).splitlines()
+             if ("@" in line or "^" in line) and line[:1] not in ";("]
+    assert lines == ["^120", "^240", "G90 @1 ^33", "G91 G81 @1 R.1 Z-0.5 L5", "G91 G81 ^[360/17] R.1 Z-0.5 L17"]
+
+
+@pytest.mark.parametrize("target", ["grbl", "fanuc"])
+def test_a_computed_polar_line_is_flattened_for_another_target(target: str) -> None:
+    source = COPIED_AS_WRITTEN["a computed radius from a parameter"]
+    out = io.StringIO(newline="")
+    translate(io.StringIO(source, newline=""), out, file="t.ngc", source="linuxcnc", target=target)
+    text = out.getvalue()
+    assert "@" not in text and "^" not in text and "#" not in text
+    _same(_ours(text, target), _ours(source))
+
+
+LOOPED = ("G21 G90 G0 X10 Y0 Z1\nG1 @5 ^30 F100\no100 repeat [3]\nG91 G1 ^10 @1\no100 endrepeat\n"
+          "#1 = 2\nG91 G1 @#1\nG90 G1 X0 Y10\nM2\n")
+"""A polar line in a loop turns further on every pass, and one with a computed radius adds what runs."""
+
+
+def test_renumbering_changes_only_the_block_number_of_a_polar_line() -> None:
+    """``--renumber`` rewrote a polar line to the X and Y it reaches once from where the text stands: in the
+    loop every pass moved by that one fixed step (rs274), and the computed one was refused."""
+    out = _copy(LOOPED, renumber="10,10")
+    polar = [line for line in out.splitlines() if "@" in line or "^" in line]
+    assert polar == ["N20 G1 @5 ^30 F100", "N30 G91 G1 ^10 @1", "N40 G91 G1 @#1"]
+
+
+@needs_rs274
+@pytest.mark.parametrize("source", [LOOPED, LOOPED.replace("#1 = 2\nG91 G1 @#1\n", "")], ids=["computed", "loop"])
+def test_a_renumbered_polar_loop_moves_as_its_source_in_rs274(source: str) -> None:
+    _same(_theirs(_copy(source, renumber="10,10")), _theirs(source))

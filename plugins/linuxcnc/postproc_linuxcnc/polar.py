@@ -20,7 +20,12 @@ interp_internal.hh, interp_internal.cc enhance_block; and rs274 2.9 run here]:
   the initial level stays while the cycle is active).
 
 A computed ``@`` or ``^`` (``@[#1]``) is known only when the program runs: a program that has one is
-flattened for another target; kept as it is for LinuxCNC, it is refused here (not read).
+flattened for another target. In a copy to LinuxCNC itself (``program_mode`` 'keep', nothing run, no dry run of
+``postproc.api._keep_check``: ``_copied``) a line whose end point is not computed here is kept as written
+(``_kept_as_written``), as rs274 reads it where the program runs: one with a computed word, a G91 cycle whose
+``L`` repeats turn each hole further (one line of the source, several holes), or one that keeps or adds to a
+tool position not known here. Every other polar line of a copy is still read into X and Y (the later steps
+check and follow it) and written as read (``postproc_linuxcnc.writer``).
 """
 
 from __future__ import annotations
@@ -29,9 +34,10 @@ from typing import Callable, Final, Iterable, Iterator
 
 from postproc.context import Context
 from postproc.errors import Location, ProgramError
-from postproc.ir.expr import Expr
+from postproc.ir.expr import Expr, Num
 from postproc.interp import spell_number
-from postproc.ir import Block
+from postproc.ir import Block, NativeCode
+from postproc.interp.variables import RUN_INTERPRETER_KEY
 from postproc.geometry.polar import clean as _clean, polar_absolute as _absolute, polar_turned as _turned
 from postproc.syntaxes.syntax import Syntax
 
@@ -78,25 +84,33 @@ class PolarSyntax(Syntax):
         words = block.words
         state = ctx.state
         column = _columns(block, ctx)
-        for letter in POLAR:
-            if isinstance(block.values.get(letter), Expr):
-                raise ProgramError(f"a computed polar coordinate ({letter}) is known only when the program runs "
-                                   "(it is read where the program is run, not kept as it is)", column(letter))
+        values = block.values
+        computed = [letter for letter in (*POLAR, "G") if isinstance(values.get(letter), Expr)]
+        copied = _copied(ctx)
+        if computed and not copied:
+            what = "G code" if computed[0] == "G" else f"polar coordinate ({computed[0]})"
+            raise ProgramError(f"a computed {what} is known only when the program runs (it is read where the "
+                               "program is run, not kept as it is)", column(computed[0]))
         polar: dict[str, float] = {}
+        kept: dict[str, Expr] = {}
+        """The polar words as expressions (a number a ``Num``), for a line kept as written."""
         codes: list[float] = []
-        repeat = 1
+        repeat: int | None = 1
         for letter, num in words:
             up = letter.upper()
             if up in POLAR:
-                if up in polar:
+                if up in kept:
                     raise ProgramError(f"address {up} appears twice in one block", column(up, 2))
-                polar[up] = float(num)
+                value = values.get(up)
+                kept[up] = value if isinstance(value, Expr) else Num(float(num))
+                if not isinstance(value, Expr):
+                    polar[up] = float(num)
             elif up == "X" or up == "Y":
                 raise ProgramError(f"cannot use both polar coordinates and an {up} word (rs274)", column(up))
-            elif up == "G":
+            elif up == "G" and not isinstance(values.get("G"), Expr):
                 codes.append(round(float(num), 1))
             elif up == "L":
-                repeat = int(float(num))
+                repeat = None if isinstance(values.get("L"), Expr) else int(float(num))
         first = next(letter for letter, _ in words if letter in POLAR)
         for code in codes:
             if code in _NOT_MOTION:
@@ -112,14 +126,19 @@ class PolarSyntax(Syntax):
             elif code == 91.0:
                 distance = "incremental"
         known_x, known_y = state.position.get("X"), state.position.get("Y")
+        cycle = any(code in _CYCLES for code in codes) or (
+            state.cycle is not None and not any(code in _MOTION or code == 80.0 for code in codes))
+        if copied and (computed or known_x is None or known_y is None
+                       or distance == "incremental" and cycle and repeat != 1):
+            _kept_as_written(block, ctx, kept)  # (rs274's rules above were checked: they need no number)
+            return
+        assert repeat is not None  # (a computed L: a program that computes, run or kept before here)
         if known_x is None or known_y is None:
             if distance == "incremental" or len(polar) < 2:
                 raise ProgramError("the tool's X and Y are unknown before a polar coordinate that keeps or "
                                    "adds to where it is (program X and Y first)", column(first))
             known_x = known_y = 0.0  # both given absolutely: where the tool is plays no part
         x, y = known_x, known_y
-        cycle = any(code in _CYCLES for code in codes) or (
-            state.cycle is not None and not any(code in _MOTION or code == 80.0 for code in codes))
         radius, angle = polar.get("@"), polar.get("^")
         holes: list[tuple[float, float]]
         if distance == "absolute":
@@ -147,6 +166,37 @@ class PolarSyntax(Syntax):
         for (ax, ay), (bx, by) in zip(holes, holes[1:]):
             yield Block(block.line, None, block.eol, [("X", spell_number(_clean(bx - ax))),
                                                       ("Y", spell_number(_clean(by - ay)))])
+
+
+def _copied(ctx: Context) -> bool:
+    """The program goes to LinuxCNC itself as written: a copy (``program_mode`` 'keep') in which nothing runs and
+    which is no dry run of a translation elsewhere (``postproc.api._keep_check``, which must find that another
+    target cannot take a computed polar word)."""
+    return (ctx.program_mode == "keep" and RUN_INTERPRETER_KEY not in ctx.run_data
+            and not ctx.run_data.get("dry_run"))
+
+
+def _kept_as_written(block: Block, ctx: Context, kept: dict[str, Expr]) -> None:
+    """A polar line of a copy whose end point is known only where LinuxCNC runs it (module docstring): its text
+    goes out as written (``NativeCode``, which only LinuxCNC writes), and its polar pair is read as X and Y
+    words whose values are the polar words' expressions (``kept``; X the first, Y the last): every later step
+    sees an end point computed when the program runs, as for ``X[#1]`` (the tool's X and Y unknown after it, a
+    cycle's holes kept verbatim), and the line's other words are read as ever. Nothing evaluates those values:
+    the program is kept, not run."""
+    given = [kept[letter] for letter, _ in block.words if letter in kept]
+    texts = [num for letter, num in block.words if letter in kept]
+    out: list[tuple[str, str]] = []
+    for letter, num in block.words:
+        if letter not in POLAR:
+            out.append((letter, num))
+        elif num == texts[0] and not any(a == "X" for a, _ in out):
+            out.extend((("X", texts[0]), ("Y", texts[-1])))
+    block.words = out
+    values = block.values
+    for letter in POLAR:
+        values.pop(letter, None)
+    values["X"], values["Y"] = given[0], given[-1]
+    block.add(NativeCode(ctx.dialect, "a polar end point known only when the program runs", block.text or ""))
 
 
 def _replaced(words: list[tuple[str, str]], x: float, y: float, drop_repeat: bool) -> list[tuple[str, str]]:

@@ -31,11 +31,12 @@
 from __future__ import annotations
 
 import copy
+import re
 from typing import Any, ClassVar, Iterable, Mapping, TextIO, cast
 
 from postproc.errors import Location, UnsupportedError
 from postproc.ir import Block, ProgramControl, Section
-from postproc.context import Context
+from postproc.context import Context, word_columns
 from postproc.dialect import Dialect
 from postproc.interp.control import (
     Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndFor, EndIf, EndRepeat, EndWhile, For, If, Repeat,
@@ -393,11 +394,25 @@ class LinuxcncWriter(WordWriter):
         Y of the point they reach from where the tool stood when the line was read (``polar``), which is that
         point only where the line runs once from there; in a loop each pass turns further (LinuxCNC's own
         ``spiral.ngc``, ``o100 repeat [800]`` of ``G91 G1 @-.0025 ^4.5``, was normalized to one fixed step, a
-        straight line, exit 0). Under ``--renumber`` the line is renumbered as before (words rewritten)."""
+        straight line, exit 0). Under ``--renumber`` only its block number changes (``_renumbered``): rewritten
+        from those words, the line in a loop moved by one fixed step on every pass (rs274 run here)."""
         text = block.text
-        if text is not None and ("@" in text or "^" in text) and not self.renumber:
-            return text.strip()
+        if text is not None and ("@" in text or "^" in text):
+            return text.strip() if not self.renumber else self._renumbered(text.strip())
         return super().normalized(block)
+
+    def _renumbered(self, text: str) -> str:
+        """``text`` (a line written as read) with the next block number in place of its own, or before its
+        first word after a block delete ``/`` where it has none (rs274 reads N first only)."""
+        number = self.renumber
+        self.renumber = number + self.renumber_step
+        own = next(((col, num) for col, letter, num in word_columns(text) if letter in "Nn"), None)
+        if own is not None:
+            found = re.compile(r"[Nn][ \t]*" + re.escape(own[1])).match(text, own[0] - 1)
+            if found is not None:
+                return text[:found.start()] + f"N{number}" + text[found.end():]
+        lead = 1 if text.startswith("/") else 0
+        return text[:lead] + (" " if lead else "") + f"N{number} " + text[lead:].lstrip()
 
     def structure_block(self, block: Block) -> str | None:
         sections = block.sections
