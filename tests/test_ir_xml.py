@@ -94,7 +94,11 @@ SAMPLES: dict[str, list[tuple[Builder, str]]] = {
         (lambda c: __import__("postproc.frames", fromlist=["FrameChange"]).FrameChange(
             "origin", {"X": Var(Num(1.0))}, "shared_offset", "linuxcnc", "G92 X#1"),
          '<FrameChange kind="origin" rules="shared_offset" family="linuxcnc" text="G92 X#1">\n'
-         '  <Words>\n    <Value of="X">\n      <Var>\n        <Num value="1.0"/>\n      </Var>\n    </Value>\n  </Words>\n</FrameChange>')],
+         '  <Words>\n    <Value of="X">\n      <Var>\n        <Num value="1.0"/>\n      </Var>\n    </Value>\n  </Words>\n</FrameChange>'),
+        (lambda c: __import__("postproc.frames", fromlist=["FrameChange"]).FrameChange(
+            "local", {"X": 10.0}, "chain", "siemens", "TRANS X10", increment_setting="setting data SD42440"),
+         '<FrameChange kind="local" rules="chain" family="siemens" text="TRANS X10" '
+         'incrementSetting="setting data SD42440">\n  <Words X="10.0"/>\n</FrameChange>')],
     "Generated": [
         (lambda c: __import__("postproc.lowering.sequences", fromlist=["GeneratedText"]).GeneratedText("(LOAD T1)", "tool_change"),
          '<Generated text="(LOAD T1)" template="tool_change"/>')],

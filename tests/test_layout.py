@@ -79,6 +79,18 @@ def test_the_core_spells_no_g_or_m_code(path: Path) -> None:
     assert not found, f"{path.relative_to(ROOT)} spells codes: {found}"
 
 
+SETTING_DATA = re.compile(r"\b(SD|MD)\d{5}\b")
+"""A SINUMERIK setting or machine datum by number (SD42440, MD10600)."""
+
+
+def test_the_core_names_no_controllers_setting_data() -> None:
+    """A controller's settings are facts of its dialect, with their sources: the core names the behaviour
+    (``FrameChange.increment_setting``) and the family base fills it in. Code, comments and docstrings alike."""
+    found = [f"{path.relative_to(ROOT)}:{n}" for path in CORE
+             for n, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1) if SETTING_DATA.search(line)]
+    assert not found, f"setting data named in the core: {found}"
+
+
 def test_the_core_imports_without_a_circle() -> None:
     """Module by module (``tests/test_import_layers.py`` holds the packages to their layers)."""
     graph: dict[str, set[str]] = {}

@@ -15,6 +15,9 @@ p.56-58]:
 * the replacing statement alone (``TRANS``, ``ROT``, ``SCALE``, ``MIRROR``) clears the programmable frame
   [K: 808D p.56 "without values: clears old instructions for offset, rotation, scaling factor, mirroring"].
 
+The first incremental move on an axis a statement moved is refused (``chain`` rules), naming the setting that
+decides whether it also travels the change (``INCREMENT_SETTING``, ``FrameChange.increment_setting``).
+
 A statement is alone in its block [K: ONE p.309 "Frame statements must be programmed in a separate NC
 block"]. Computed values (``TRANS X=R1``), axes other than X, Y, Z, an additive statement without values
 and what is listed as not modelled raise ``Unmodelled``: the block is kept verbatim, refused elsewhere by
@@ -38,6 +41,11 @@ STATEMENTS: Final = {
     "SCALE": "scale", "ASCALE": "scale_add", "MIRROR": "mirror", "AMIRROR": "mirror_add",
 }
 """Frame statement -> the neutral kind it is read as."""
+INCREMENT_SETTING: Final = "setting data SD42440 (FRAME_OFFSET_INCR_PROG)"
+"""Whether the first incremental move on an axis a frame change moved also travels the change: SD42440
+FRAME_OFFSET_INCR_PROG, 1 (the default) it does, 0 only the increment; so for a settable frame's change (G54...)
+too [K: 840D Function Manual K2 08/2005 1.3 "Frames with G91"]. The setting is not in the set-up, so the
+simulation refuses such a move (``postproc.frames.commands.pending``) and names it."""
 _FACTOR: Final = {"X": "I", "Y": "J", "Z": "K"}
 _ABOUT: Final = {"X": "A", "Y": "B", "Z": "C"}
 
@@ -67,7 +75,8 @@ def read_frame(word: str, code: str, pos: int, end: int, file: str, line: int) -
             raise Unmodelled(f"{word} with computed values", at)
         values[letter] = value.value
         at = skip_blanks(code, stop)
-    return FrameChange(kind, _words(word, kind, values, pos), CHAIN, "siemens", code[pos:].strip())
+    return FrameChange(kind, _words(word, kind, values, pos), CHAIN, "siemens", code[pos:].strip(),
+                       increment_setting=INCREMENT_SETTING)
 
 
 def _words(word: str, kind: str, values: dict[str, float], pos: int) -> dict[str, float | Expr]:

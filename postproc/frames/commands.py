@@ -45,6 +45,7 @@ def command(ev: Evaluation, block: Block, change: FrameChange) -> None:
         # frame change under G41/G42 is not simulated [?: how the compensated path joins across it]
         raise ProgramError(f"{change.describe()} with cutter compensation on cannot be run (cancel it first)")
     if frame.rules == "chain":
+        frame.increment_setting = change.increment_setting  # (the family's words, for ``pending``'s error)
         frame.chain(chain_component(change.kind, words, ev.modal.plane, change.describe()),
                     kind.endswith("_add"), p)
         return
@@ -95,8 +96,8 @@ def command(ev: Evaluation, block: Block, change: FrameChange) -> None:
 
 def pending(ev: Evaluation, s: dict[str, Section], frame: Frame) -> None:
     """chain rules: the first incremental move on an axis a frame change moved is refused: whether it
-    also travels that change is setting data SD42440 FRAME_OFFSET_INCR_PROG (1, the default: it does;
-    0: only the increment) [K: 840D Function Manual K2 08/2005 1.3 "Frames with G91"]. An absolute move
+    also travels that change is a setting of the controller, which the family names
+    (``FrameChange.increment_setting``: SINUMERIK's in ``dialects.siemens.frames``). An absolute move
     settles the axis."""
     m = s.get("Motion")
     if not isinstance(m, Motion) or m.mode is None or "MachineCoordinates" in s:
@@ -104,9 +105,9 @@ def pending(ev: Evaluation, s: dict[str, Section], frame: Frame) -> None:
     if ev.modal.distance == "incremental":
         for axis in m.axes:
             if axis in frame.pending:
+                setting = frame.increment_setting or "a setting of the controller"
                 raise ProgramError(f"an incremental {axis} after a frame change: whether it also travels the "
-                                   "change is setting data SD42440 (FRAME_OFFSET_INCR_PROG): program "
-                                   f"{axis} absolutely first")
+                                   f"change is {setting}: program {axis} absolutely first")
         return
     frame.pending.difference_update(m.axes)
 

@@ -51,7 +51,7 @@ class Frame:
     """The frame in force (lengths in mm, angles in degrees)."""
 
     __slots__ = ("rules", "offset", "saved", "applied", "local", "rotation", "last_angle", "scaling", "mirror", "turns",
-                 "work", "map", "polar", "pending")
+                 "work", "map", "polar", "pending", "increment_setting")
 
     def __init__(self, rules: str) -> None:
         self.rules = rules
@@ -82,6 +82,9 @@ class Frame:
         self.pending: set[str] = set()
         """chain: the axes a frame change moved in program coordinates, until a move programs them
         absolutely (an incremental move there is refused: ``postproc.frames.lowering``)."""
+        self.increment_setting = ""
+        """chain: what decides whether such a move also travels the change, in the family's words (the last
+        change's ``FrameChange.increment_setting``; empty: not named)."""
 
     # -- the map ----------------------------------------------------------------------------------
     def plain(self) -> bool:

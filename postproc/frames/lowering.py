@@ -268,7 +268,8 @@ class FrameEvaluator(BlockStep):
             if frame is not None:
                 frame.select_work(modal.work_offset)
                 if frame.rules == "chain":
-                    frame.pending.update(XYZ)  # SD42440 applies to a settable offset too [K: K2 1.3]
+                    frame.pending.update(XYZ)  # a settable offset's change as a frame change's (chain rules,
+                    # ``FrameChange.increment_setting``: the family base gives the setting and its source)
 
     def data_setting(self, block: Block, s: dict[str, Section]) -> bool:
         """A G10 (``offset_changes.data_setting``): True where the block changed."""

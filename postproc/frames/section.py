@@ -7,7 +7,10 @@ is an offset, a centre or a mirror line on that axis; ``R`` an angle; ``P`` a co
 named after what they do, see ``postproc.frames.frame``; each dialect's reading names its controller's). ``family`` and ``text`` keep the command as written, for a target of the same
 family that runs it natively (``postproc.frames.lowering``). ``omitted`` says, in the family's words, where the
 controller takes a value the command leaves out (Fanuc: a G68 without R, its angle from a parameter), for the
-error that the simulation, which does not know it, gives (empty: nothing to say).
+error that the simulation, which does not know it, gives (empty: nothing to say). ``increment_setting`` names, in
+the family's words, what decides whether the first incremental move on an axis a ``chain`` change moved also
+travels the change (SINUMERIK: a setting datum), for the error that refuses such a move (empty: "a setting of the
+controller").
 
 Kinds (what each does is in ``postproc.frames.frame``):
 - ``local``: a local offset (Fanuc G52; LinuxCNC G52, which shares G92's offset);
@@ -57,10 +60,10 @@ class FrameChange(Section):
     """One frame command (see the module docstring)."""
 
     XNAME = KEY = "FrameChange"
-    __slots__ = ("kind", "words", "rules", "family", "text", "omitted")
+    __slots__ = ("kind", "words", "rules", "family", "text", "omitted", "increment_setting")
 
     def __init__(self, kind: str, words: dict[str, float | Expr], rules: str, family: str, text: str,
-                 omitted: str = "") -> None:
+                 omitted: str = "", increment_setting: str = "") -> None:
         if kind not in KINDS:
             raise ValueError(f"unknown frame change {kind!r}")
         if rules not in RULES:
@@ -71,6 +74,7 @@ class FrameChange(Section):
         self.family = family
         self.text = text
         self.omitted = omitted
+        self.increment_setting = increment_setting
 
     def describe(self) -> str:
         return f"{self.text} ({self.kind.replace('_', ' ')})"
@@ -89,13 +93,15 @@ class FrameChange(Section):
             elif isinstance(child.tag, str):
                 raise ValueError(f"unexpected <{child.tag}>")
         return cls(el.get("kind", ""), words, el.get("rules", ""), el.get("family", ""), el.get("text", ""),
-                   el.get("omitted", ""))
+                   el.get("omitted", ""), el.get("incrementSetting", ""))
 
     def make_xml_source(self, base_dir: str = ".", rel_file: str = "", exhibition_only: bool = False) -> etree._Element:
         etree = lxml_etree()
         el = etree.Element(self.XNAME, kind=self.kind, rules=self.rules, family=self.family, text=self.text)
         if self.omitted:
             el.set("omitted", self.omitted)
+        if self.increment_setting:
+            el.set("incrementSetting", self.increment_setting)
         child = etree.SubElement(el, "Words")
         for k, v in self.words.items():
             if isinstance(v, Expr):
@@ -106,11 +112,13 @@ class FrameChange(Section):
 
     def _key(self) -> tuple[Any, ...]:
         return (self.kind, tuple(sorted(self.words.items(), key=lambda kv: kv[0])), self.rules, self.family, self.text,
-                self.omitted)
+                self.omitted, self.increment_setting)
 
     def __repr__(self) -> str:
-        omitted = f", {self.omitted!r}" if self.omitted else ""
-        return f"FrameChange({self.kind!r}, {self.words!r}, {self.rules!r}, {self.family!r}, {self.text!r}{omitted})"
+        omitted = f", {self.omitted!r}" if self.omitted or self.increment_setting else ""
+        setting = f", {self.increment_setting!r}" if self.increment_setting else ""
+        return (f"FrameChange({self.kind!r}, {self.words!r}, {self.rules!r}, {self.family!r}, {self.text!r}{omitted}"
+                f"{setting})")
 
 
 def register_frames(factory: XFactory) -> None:

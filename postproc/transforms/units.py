@@ -166,7 +166,7 @@ class UnitConverter:
                        and not (isinstance(v, float) and v == 0.0)}
             words = {**section.words, **changed}
             return FrameChange(section.kind, words, section.rules, section.family, respell(section.text, changed),
-                               section.omitted)
+                               section.omitted, section.increment_setting)
         if isinstance(section, RigidTap):
             return RigidTap(_lengths(section.axes, k), _times(section.pitch, k), section.dwell, section.speedup)
         if type(section).__name__ in INERT:
