@@ -20,7 +20,7 @@ from .lowering.arcs import ArcOption, RewriteArcs, settle_arc_ends
 from .lowering.lower import lower_for
 from .plugins import Registry, default_registry
 from .collector import gc_paused as gc_paused  # public API names
-from .reading import read_blocks as read_blocks
+from .reading import READER_FOUND, read_blocks as read_blocks
 from .syntaxes.program import HIGHEST_SEQUENCE, RUN_CHECK, SUBPROGRAM_RULES_KEY, TARGET_OMITS_VACANT, ProgramSyntax
 from .lowering.sequences import Sequences
 from .setup.machine_setup import MachineSetup
@@ -196,6 +196,8 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context, registry: 
         if program is not None:  # (the dry run's steps leave the program step out: its rules come with it)
             trial.run_data[SUBPROGRAM_RULES_KEY] = program.SUBPROGRAM_RULES
         trial.run_data["dry_run"] = True  # what it writes is a part of the program, read back and discarded
+        if READER_FOUND in ctx.run_data:  # the subprograms the reader found, as the program's own run sees them
+            trial.run_data[READER_FOUND] = ctx.run_data[READER_FOUND]
         steps = [step for step in src.pipeline(ctx.setup).steps if not isinstance(step, ProgramSyntax)]
         blocks = Pipeline(src.NAME, steps).run(body, trial)
         lowered = transform_program(lower_for(blocks, trial, dst, "error", registry.lowerings), trial, options)
@@ -241,6 +243,8 @@ def _run_check(src: type[Dialect], ctx: Context) -> Callable[[Iterable[Block]], 
         trial = src.context(ctx.file, ctx.setup, found)
         trial.state = copy.deepcopy(ctx.state)
         trial.on_unsupported = ctx.on_unsupported
+        if READER_FOUND in ctx.run_data:  # (as in ``_keep_check``)
+            trial.run_data[READER_FOUND] = ctx.run_data[READER_FOUND]
         steps = [step for step in src.pipeline(ctx.setup).steps if not isinstance(step, ProgramSyntax)]
 
         def forward() -> None:  # errors in the run's order; no warnings (the program's own pass gives those)

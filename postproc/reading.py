@@ -8,7 +8,7 @@ Below ``postproc.api`` so that the simulator and the sequences read programs wit
 from __future__ import annotations
 
 from itertools import chain
-from typing import Callable, Iterable, Iterator, Mapping
+from typing import Callable, Final, Iterable, Iterator, Mapping
 
 from .context import Context
 from .dialect import Dialect
@@ -17,6 +17,13 @@ from .ir import Block
 from .syntaxes.lines import checked_lines
 from .setup.machine_setup import MachineSetup
 from .syntaxes.syntax import Pipeline
+
+READER_FOUND: Final = "reader.found"
+"""``ctx.run_data`` key: what the dialect's reader found in the program as it read it, under the reader's own keys
+(LinuxCNC on a lathe: each subprogram's blocks as written, the profiles of its G70-G72). A dry run of the steps
+after the reader on a context of its own (``postproc.api``: whether a program that computes can be kept, what its
+run refuses) is given the same, as the program's own run has it: without it a cycle found no profile the reader
+had read ("no subprogram o100 is defined before the cycle"), the reason given for flattening the program."""
 
 
 def read_blocks(lines: Iterable[str], file: str, dialect: type[Dialect], setup: MachineSetup,

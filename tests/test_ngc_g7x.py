@@ -378,6 +378,21 @@ def test_a_computed_profile_word_of_a_program_that_runs_is_read(before: str, lin
     translate(io.StringIO(_computed_program(before, line)), io.StringIO(), file="prog.ngc", source="linuxcnc",
               target="fanuc", setup=RADIUS)
 
+@pytest.mark.parametrize("code", ["G70 Q100 X6 Z1", "G71 Q100 X6 Z1 D0.5"])
+def test_a_program_flattened_for_its_computed_profile_says_so(code: str) -> None:
+    """Flattened for Fanuc, the warning gives the true reason (the cycle computes, so only LinuxCNC takes it as
+    written); it said "no subprogram o100 is defined before the cycle", which is defined on line 2: the dry run
+    that finds the reason (``postproc.api._keep_check``) did not see the subprograms the reader had found."""
+    text = _computed_program("#31=1\n", "G1 X[2+#31] Z-2").replace("G70 Q100 X6 Z1", code)
+    warnings = io.StringIO()
+    translate(io.StringIO(text), io.StringIO(), file="prog.ngc", source="linuxcnc", target="fanuc", setup=RADIUS,
+              diagnostics=Diagnostics(warn_stream=warnings))
+    assert warnings.getvalue() == (
+        f"prog.ngc:2:1: warning: the program is flattened (its evaluated motion is written): line 9: {code.split()[0]} "
+        "(a G70-G72 cycle that computes, kept as written (its moves are known where it runs)) from linuxcnc has no "
+        "equivalent in fanuc\n")
+
+
 LOCAL = "G18 G8 F100\nO100 SUB\nG1 X1 Z0\nG1 X[2+#1] Z-4\nG1 X6\nO100 ENDSUB\n#1=1.5\nG0 X6 Z1\nG70 Q100 X6 Z1\nM2\n"
 
 

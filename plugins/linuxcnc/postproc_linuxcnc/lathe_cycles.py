@@ -42,6 +42,7 @@ from postproc.cycles.turning.profile import TurnMove
 from postproc.errors import Location, PostprocError, ProgramError, UnsupportedError
 from postproc.ir.expr import Expr
 from postproc.interp.variables import RUN_INTERPRETER_KEY, RUN_VARIABLES_KEY
+from postproc.reading import READER_FOUND
 from postproc.ir import Block, Motion, NativeCode
 from postproc.rs274.arc_ends import RS274NGC_ARC_END
 from postproc.rs274.codes import g_key
@@ -59,7 +60,8 @@ CODE_OF: Final = {mode: code for code, mode in MODES.items()}
 WORDS: Final = {"70": "QDEP", "71": "QDIR", "72": "QDIR"}
 """The cycle's words besides X and Z [V: g-code.adoc]."""
 PROFILES_KEY: Final = "ngc.g7x_profiles"
-"""``ctx.run_data`` key: subprogram name -> its blocks as written (``ProfileCollector``)."""
+"""Key in what the reader found (``postproc.reading.READER_FOUND``): subprogram name -> its blocks as written
+(``ProfileCollector``, ``profiles``)."""
 COMPENSATING_KEY: Final = "ngc.g7x_compensating"
 """``ctx.state.extra`` key: cutter (tool nose) compensation is on (``follow_compensation``)."""
 CORNER_BLOCK: Final = "a G70-G72 profile block with a fillet (A) or chamfer (C)"
@@ -89,7 +91,8 @@ class ProfileCollector:
     __slots__ = ("profiles", "name", "body", "corner")
 
     def __init__(self, ctx: Context) -> None:
-        self.profiles: dict[str, list[Written]] = ctx.run_data.setdefault(PROFILES_KEY, {})
+        found: dict[str, Any] = ctx.run_data.setdefault(READER_FOUND, {})
+        self.profiles: dict[str, list[Written]] = found.setdefault(PROFILES_KEY, {})
         self.name: str | None = None
         self.body: list[Written] = []
         axes = ctx.setup.machine.axes
@@ -116,6 +119,13 @@ class ProfileCollector:
         if self.corner and any(letter.upper() in self.corner for letter, _ in block.words):
             block.add(NativeCode("linuxcnc", CORNER_BLOCK, block.text or "", inert=True))
             block.words = []
+
+
+def profiles(ctx: Context) -> dict[str, list[Written]]:
+    """The subprograms the reader found (``ProfileCollector``), by name: in the program's run, and in a dry run of
+    the later steps (``READER_FOUND``)."""
+    found: dict[str, list[Written]] = ctx.run_data.get(READER_FOUND, {}).get(PROFILES_KEY, {})
+    return found
 
 
 def check_profile_block(block: Block, ctx: Context) -> None:
@@ -242,7 +252,7 @@ def read_g7x(block: Block, ctx: Context, motion: Motion, values: dict[str, Any],
     if state.feed is None or state.feed <= 0:
         raise refuse(f"{name} cuts at the feed rate in force, and none is (program F first)")
     label = str(int(words["Q"])) if words["Q"] == int(words["Q"]) else str(words["Q"])
-    written = ctx.run_data.get(PROFILES_KEY, {}).get(label)
+    written = profiles(ctx).get(label)
     if written is None:
         raise unmodelled(f"{name} Q{label}: no subprogram o{label} is defined before the cycle", "Q")
     if copied and _computes(written):
@@ -341,7 +351,7 @@ def _run_profile(running: Any, label: str, block: Block, ctx: Context, name: str
     the cycle's Q and names the profile's line."""
     from postproc.interp.evaluation import evaluate_number  # (the interpreter's modules: a profile's cost only)
 
-    corners = {line: (words, values) for body in ctx.run_data.get(PROFILES_KEY, {}).values()
+    corners = {line: (words, values) for body in profiles(ctx).values()
                for line, words, values in body if words and words[0][0] != STATEMENT}
     variables = running.vars
     errors: list[PostprocError] = []
