@@ -48,6 +48,8 @@ _MOTION: Final = frozenset((0.0, 1.0, 2.0, 3.0, 33.0, 33.1, 38.2, 38.3, 38.4, 38
 """Group-01 codes but the cycles: a block with one is no cycle block."""
 _NOT_MOTION: Final = {10.0: "G10", 28.0: "G28", 28.1: "G28.1", 30.0: "G30", 30.1: "G30.1", 52.0: "G52",
                       53.0: "G53", 92.0: "G92", 92.1: "G92.1", 92.2: "G92.2", 92.3: "G92.3"}
+_COMPUTED: Final = {"G": "G code beside polar coordinates", "L": "repeat count (L) beside polar coordinates"}
+"""A computed word besides ``@``/``^`` that decides where the polar point is, as the refusal names it."""
 _PLANES: Final = {17.0: "XY", 18.0: "ZX", 19.0: "YZ"}
 
 
@@ -85,17 +87,17 @@ class PolarSyntax(Syntax):
         state = ctx.state
         column = _columns(block, ctx)
         values = block.values
-        computed = [letter for letter in (*POLAR, "G") if isinstance(values.get(letter), Expr)]
+        computed = [letter for letter in (*POLAR, "G", "L") if isinstance(values.get(letter), Expr)]
         copied = _copied(ctx)
-        if computed and not copied:
-            what = "G code" if computed[0] == "G" else f"polar coordinate ({computed[0]})"
+        if computed and not copied:  # (a G code or a repeat count turns or places the point too)
+            what = _COMPUTED.get(computed[0], f"polar coordinate ({computed[0]})")
             raise ProgramError(f"a computed {what} is known only when the program runs (it is read where the "
                                "program is run, not kept as it is)", column(computed[0]))
         polar: dict[str, float] = {}
         kept: dict[str, Expr] = {}
         """The polar words as expressions (a number a ``Num``), for a line kept as written."""
         codes: list[float] = []
-        repeat: int | None = 1
+        repeat = 1
         for letter, num in words:
             up = letter.upper()
             if up in POLAR:
@@ -109,8 +111,8 @@ class PolarSyntax(Syntax):
                 raise ProgramError(f"cannot use both polar coordinates and an {up} word (rs274)", column(up))
             elif up == "G" and not isinstance(values.get("G"), Expr):
                 codes.append(round(float(num), 1))
-            elif up == "L":
-                repeat = None if isinstance(values.get("L"), Expr) else int(float(num))
+            elif up == "L" and not isinstance(values.get("L"), Expr):
+                repeat = int(float(num))
         first = next(letter for letter, _ in words if letter in POLAR)
         for code in codes:
             if code in _NOT_MOTION:
@@ -132,7 +134,6 @@ class PolarSyntax(Syntax):
                        or distance == "incremental" and cycle and repeat != 1):
             _kept_as_written(block, ctx, kept)  # (rs274's rules above were checked: they need no number)
             return
-        assert repeat is not None  # (a computed L: a program that computes, run or kept before here)
         if known_x is None or known_y is None:
             if distance == "incremental" or len(polar) < 2:
                 raise ProgramError("the tool's X and Y are unknown before a polar coordinate that keeps or "
