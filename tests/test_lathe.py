@@ -13,7 +13,7 @@ from typing import Any
 import pytest
 
 from postproc.api import read_program, translate
-from postproc.errors import ErrorList
+from postproc.errors import Diagnostics, ErrorList
 from postproc.ir import Block
 from postproc.ir.lathe_sections import LatheCycle
 from postproc.setup.machine_setup import InputSettings, LatheCycleSettings, MachineSettings, MachineSetup
@@ -508,6 +508,43 @@ def test_a_lathe_cycle_with_computed_words_is_flattened_or_refused() -> None:
     grbl = write(program, "fanuc", "grbl")
     assert "(turn_single from line 3: G90 X50. Z-30. F100.)" in grbl
     assert deviation(program, grbl, "fanuc", "grbl") == 0.0
+
+
+SUBPROGRAM_G71 = ("O1000\nG21 G18 G40 G99\nT0101\nG97 S500 M03\nG00 X62. Z2.\n{first}M98 P2000\nG00 X100. Z100.\n"
+                  "M30\nO2000\n{second}G71 U2. R0.5\nG71 P10 Q20 U0.4 W0.1 F0.2\nN10 G00 X{x}\nG01 Z-20.\nX60.\n"
+                  "N20 Z-40.\nM99\n")
+"""A roughing cycle in an M98 subprogram, called from X62 Z2, the text after the call at X100 Z100."""
+
+
+def _flattened(program: str, target: str) -> tuple[str, str]:
+    warned = io.StringIO()
+    out = io.StringIO()
+    translate(lines(program), out, file="in.nc", source="fanuc", target=target, setup=LATHE,
+              diagnostics=Diagnostics(warn_stream=warned))
+    return out.getvalue(), warned.getvalue()
+
+
+def test_a_lathe_cycle_in_a_subprogram_is_roughed_from_where_it_is_called() -> None:
+    """Kept symbolically for LinuxCNC (the program computes: ``#5=1.``), the G71 in O2000 was expanded from where
+    the text before it left the tool (X100 Z100, after the call), not where M98 runs it (X62 Z2): exit 0, verify
+    105 mm off. As a hole cycle's, an expansion the control flow may run elsewhere flattens the program."""
+    program = SUBPROGRAM_G71.format(first="#5=1.\n", second="", x="40.")
+    written, warned = _flattened(program, "linuxcnc")
+    assert deviation(program, written, "fanuc", "linuxcnc") < 1e-9
+    assert warned == ("in.nc:6:1: warning: the program is flattened (its evaluated motion is written): line 12: the "
+                      "lathe cycle in 'G71 P10 Q20 U0.4 W0.1 F0.2' would be written as the moves of one run, but the "
+                      "program's control flow (a subprogram, a loop or a jump) runs it from other positions\n")
+
+
+def test_a_flattened_computed_profile_says_why() -> None:
+    """Its roughing profile computed (X[#1]), the program is flattened for LinuxCNC, and the warning says so: it
+    said "M98 sharing its line with other words (FeedMode)", the source's feed mode put on the dry run's first block
+    (the call) as if it were the program's start."""
+    program = SUBPROGRAM_G71.format(first="", second="#1=40.\n", x="[#1]")
+    written, warned = _flattened(program, "linuxcnc")
+    assert deviation(program, written, "fanuc", "linuxcnc") < 1e-9
+    assert warned == ("in.nc:6:1: warning: the program is flattened (its evaluated motion is written): line 13: "
+                      "G71: a computed word in the profile cannot be expanded\n")
 
 
 @pytest.mark.parametrize("word", ["X1.5", "U1.5", "P1500"])

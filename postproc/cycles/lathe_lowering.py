@@ -45,10 +45,12 @@ from postproc.ir.expr import Expr
 from postproc.errors import PostprocError, UnsupportedError
 from postproc.ir import (
     Block, Comments, CompoundMotion, CutterCompensation, DistanceMode, FeedMode, MachineFunction, Motion, Plane,
-    SpindleControl, ToolChange, ToolLengthOffset, ToolSelect,
+    SpindleControl, ToolChange, ToolLengthOffset, ToolSelect, one_line,
 )
 from postproc.ir.lathe_sections import CoordinateSet, LatheCycle
 
+from ..interp.control import CONTROL, LABEL
+from ..ir.source_map import ExecutedBlock
 from ..lowering.machine_functions import comment_out
 from .lathe_offsets import LatheOffsets
 
@@ -107,7 +109,16 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
     plane_set = not foreign
     start_mode = ctx.state.feed_mode  # read before any block: the source's mode at the start
     target_mode = target.LATHE_FEED_AT_START if not foreign else "per_min"
-    mode_set = start_mode == target_mode
+    dry = bool(ctx.run_data.get("dry_run"))
+    """A dry run (``postproc.api._keep_check``) lowers the program from its first construct on, not from its start,
+    which the translation's own lowering gave the source's feed mode: said at the dry run's first block, an ``M98``
+    there could no longer stand alone, and that was the reason the program was flattened ("M98 sharing its line
+    with other words (FeedMode)") whatever its true one."""
+    mode_set = start_mode == target_mode or dry
+    flowing = False
+    """A control statement or label has passed: where a cycle starts is the text's, not each run's."""
+    repeated: UnsupportedError | None = None
+    """In a dry run, the first expansion's refusal, should a control statement follow (a jump may repeat it)."""
     turning = False
     """The spindle turns before the block (a turret index must not become a tool change then)."""
     station: int | None = None
@@ -124,6 +135,10 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
     drop_switches = not target.X_MODE_SWITCH
     for block in blocks:
         sections = block.sections
+        if not flowing and (CONTROL in sections or LABEL in sections) and not isinstance(block, ExecutedBlock):
+            flowing = True
+            if repeated is not None:
+                ctx.diagnostics.error(repeated)
         if drop_switches and "XProgramming" in sections:
             del sections["XProgramming"]  # the IR's X is the set-up's mode: written so
             block.changed()
@@ -162,6 +177,19 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
                     skip_departure = True
             else:
                 source = (block.text or " ".join(a + n for a, n in block.words)).strip()
+                if cycle.form != "first" and (flowing or dry and repeated is None):
+                    # as a hole cycle's (``postproc.cycles.lowering``): its moves are expanded from where the
+                    # reading left the tool, which is where it runs only where the text is the order of execution
+                    # (was: a G71 in an M98 subprogram kept symbolically for LinuxCNC, roughed from where the text
+                    # after the call left the tool, exit 0; verify found it 105 mm off)
+                    refusal = UnsupportedError(
+                        f"the lathe cycle in '{one_line(source)}' would be written as the moves of one run, but the "
+                        "program's control flow (a subprogram, a loop or a jump) runs it from other positions",
+                        ctx.at(block))
+                    if flowing:
+                        ctx.diagnostics.error(refusal)
+                        continue
+                    repeated = refusal
                 del sections["LatheCycle"]
                 block.changed()
                 if cycle.form == "first":
