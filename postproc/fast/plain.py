@@ -132,8 +132,8 @@ class PlainLane(BlockLane):
         # each number read where it stands in the line (no word objects made; a canonical axis-type number has
         # its point, a code's and N's are digits). A G word's number is taken out (a look-up in the code table).
         # Compiled: positions, the letter's index and the addresses met are machine integers; a number read is
-        # stored as the float object ``span_decimal`` made (``value: object``, never narrowed: a narrowed float
-        # was unboxed and boxed again, a second float a word), under the letter's cached string (``_LETTER_KEYS``,
+        # stored as the float object ``span_decimal`` made (``cast(object, ..)``: narrowed to a float, it was
+        # unboxed and boxed again, a second float a word), under the letter's cached string (``_LETTER_KEYS``,
         # not a one-character slice of the line).
         text = block.spelled()
         marks = block.marks
@@ -167,14 +167,14 @@ class PlainLane(BlockLane):
             if kind == LETTER_N:
                 sequence_value = span_whole(text, at + 1, end)
             elif kind == LETTER_AXIS:
-                value = span_decimal(text, at + 1, end)
+                value = cast(object, span_decimal(text, at + 1, end))  # (not narrowed to a float: kept boxed)
                 if value is None:
                     break  # (a canonical axis number has its point: never here)
                 stored[letters[index]] = value
             elif cycle:
                 break  # a code, F or a cycle word under an active cycle: the general path
             elif kind == LETTER_F or kind == LETTER_ARC:
-                value = span_decimal(text, at + 1, end)
+                value = cast(object, span_decimal(text, at + 1, end))
                 if value is None:
                     break
                 if others is None:
