@@ -93,6 +93,14 @@ def test_the_cases_that_matter_by_hand() -> None:
         assert scan_words(line) == (0, NO_WORDS, -1), line
 
 
+@given(st.from_regex(r"[0-9]{1,30}", fullmatch=True))
+def test_a_block_number_of_any_length_reads_as_int_reads_it(digits: str) -> None:
+    """The scan sums a block number of up to 18 digits (leading zeros and all) as a machine integer and reads a
+    longer one by ``int``: the same number either way, up to the line check's 30 digits."""
+    line = f"N{digits} X1."
+    assert scan_words(line)[2] == scan_marks(line)[2] == int(digits)
+
+
 def _marks_agree(line: str) -> None:
     """``scan_marks`` answers as ``scan_words`` does, its words unmade (marks) only on a canonical line of at most
     ``MARK_WORDS`` words and 255 characters, from which ``marked_words`` and a block's ``words`` make the same."""

@@ -36,14 +36,14 @@ class FanucReader(Reader):
 def read_line(raw: str, number: int, ctx: Context) -> Block:
     """Line ``number`` of the program (``raw``, with its end of line) as a lexed block; a line the reader
     refuses is reported and kept as text only."""
-    size = len(raw)
-    last = raw[size - 1] if size else ""  # (compiled: a one-character string is a cached object)
-    if last == "\n":
-        if size > 1 and raw[size - 2] == "\r":
+    size: i64 = len(raw)
+    last: i64 = ord(raw[size - 1]) if size else 0  # (compiled: the code read in place, no string object)
+    if last == 10:  # LF
+        if size > 1 and ord(raw[size - 2]) == 13:  # CR LF
             text, eol = raw[:-2], "\r\n"
         else:
             text, eol = raw[:-1], "\n"
-    elif last == "\r":
+    elif last == 13:  # CR
         text, eol = raw[:-1], "\r"
     else:
         text, eol = raw, ""

@@ -129,7 +129,8 @@ class CannedCycleResolveSyntax(Syntax):
         state = ctx.state
         sections = block.sections
         if state.cycle is None and "CycleCall" not in sections:
-            if "MachineFunction" in sections or RIGID_KEY in state.extra:
+            extra = state.extra  # (most runs hold no extra state: no look-up then)
+            if "MachineFunction" in sections or len(extra) != 0 and RIGID_KEY in extra:
                 try:  # a rigid tapping code, or what ends its mode (rare)
                     note_rigid_mode(sections, state)
                 except ProgramError as err:

@@ -42,6 +42,8 @@ LETTER_KIND: Final = bytes(LETTER_AXIS if c in AXIS_LETTERS else LETTER_N if c =
                            for c in "ABCDEFGHIJKLMNOPQRSTUVWXYZ")
 """What a plain-block lane does with each letter A-Z (by ``ord(letter) - 65``): one byte read instead of set
 tests (both lanes: this one and ``plain_ngc.NgcPlainLane``)."""
+_LETTER_KEYS: Final[list[str]] = [chr(65 + i) for i in range(26)]
+"""The upper-case letters by ``ord(letter) - 65`` (compiled: a list item, not a one-character slice of a line)."""
 MOTION_MODES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
 """The motion modes a plain block may move in."""
 _MOTION_KEYS: Final = {"0": "0", "00": "0", "1": "1", "01": "1", "2": "2", "02": "2", "3": "3", "03": "3"}
@@ -129,17 +131,24 @@ class PlainLane(BlockLane):
         # ``read`` of a canonical line whose words the reader left unmade (``Block.marks``): the same reading,
         # each number read where it stands in the line (no word objects made; a canonical axis-type number has
         # its point, a code's and N's are digits). A G word's number is taken out (a look-up in the code table).
+        # Compiled: positions, the letter's index and the addresses met are machine integers; a number read is
+        # stored as the float object ``span_decimal`` made (``cast(object, ..)``: narrowed to a float, it was
+        # unboxed and boxed again, a second float a word), under the letter's cached string (``_LETTER_KEYS``,
+        # not a one-character slice of the line).
         text = block.spelled()
         marks = block.marks
         count = marks & MARK_MASK
         rest = marks >> MARK_BITS
         size: i64 = len(text)
         axes: dict[str, float | Expr] = {}
-        others: dict[str, float | Expr] | None = None
+        stored = cast("dict[str, object]", axes)
+        others: dict[str, object] | None = None
         sequence_value: object = None
+        value: object = None
         mode: str | None = None
         arc_words = False
-        seen = 0
+        seen: i64 = 0
+        letters = _LETTER_KEYS
         cycle = ctx.state.cycle is not None
         i: i64 = 0
         at: i64 = rest & MARK_MASK
@@ -147,10 +156,10 @@ class PlainLane(BlockLane):
             rest = rest >> MARK_BITS
             following: i64 = rest & MARK_MASK if i + 1 < count else size + 1  # the next letter's place
             end = following - 1
-            index = ord(text[at]) - 65
+            index: i64 = ord(text[at]) - 65
             if index < 0 or index > 25:
                 break
-            bit = 1 << index
+            bit: i64 = 1 << index
             if seen & bit:
                 break
             seen |= bit
@@ -158,19 +167,19 @@ class PlainLane(BlockLane):
             if kind == LETTER_N:
                 sequence_value = span_whole(text, at + 1, end)
             elif kind == LETTER_AXIS:
-                value = span_decimal(text, at + 1, end)
+                value = cast(object, span_decimal(text, at + 1, end))  # (not narrowed to a float: kept boxed)
                 if value is None:
                     break  # (a canonical axis number has its point: never here)
-                axes[text[at]] = value
+                stored[letters[index]] = value
             elif cycle:
                 break  # a code, F or a cycle word under an active cycle: the general path
             elif kind == LETTER_F or kind == LETTER_ARC:
-                value = span_decimal(text, at + 1, end)
+                value = cast(object, span_decimal(text, at + 1, end))
                 if value is None:
                     break
                 if others is None:
                     others = {}
-                others[text[at]] = value
+                others[letters[index]] = value
                 if kind == LETTER_ARC:
                     arc_words = True
             elif kind == LETTER_G and mode is None:
@@ -184,7 +193,8 @@ class PlainLane(BlockLane):
             at = following
             i += 1
         else:
-            return self._finish(block, ctx, axes, others, sequence_value, mode, arc_words, None, cycle)
+            return self._finish(block, ctx, axes, cast("dict[str, float | Expr] | None", others), sequence_value, mode,
+                                arc_words, None, cycle)
         return False
 
     def _finish(self, block: Block, ctx: Context, axes: dict[str, float | Expr],
@@ -288,6 +298,7 @@ def span_decimal(text: str, start: i64, end: i64) -> float | None:
     mantissa: i64 = 0
     digits: i64 = 0
     places: i64 = -1
+    scale = 1.0  # ten to the places read (exact: at most DECIMAL_DIGITS places reach the division)
     while i < end:
         c: i64 = ord(text[i])
         if 48 <= c <= 57:
@@ -295,6 +306,7 @@ def span_decimal(text: str, start: i64, end: i64) -> float | None:
             digits += 1
             if places >= 0:
                 places += 1
+                scale = scale * 10.0
         elif c == 46 and places < 0:  # '.'
             places = 0
         else:
@@ -304,12 +316,10 @@ def span_decimal(text: str, start: i64, end: i64) -> float | None:
         return None
     if digits > DECIMAL_DIGITS:
         return decimal_value(text[start:end])
-    value = float(mantissa) / POWERS[places] if places > 0 else float(mantissa)
+    value = float(mantissa) / scale if places > 0 else float(mantissa)
     return -value if negative else value
 
 
-POWERS: Final[list[float]] = [1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15]
-"""Powers of ten, each exact in a float (``span_decimal``'s divisors, as ``decimal_value``'s)."""
 
 
 def fill_values(values: dict[str, float | int | Expr], axes: dict[str, float | Expr], sequence: object,

@@ -40,6 +40,8 @@ _CLASS: Final = bytes(_AXIS if chr(c) in "XYZABCUVWIJRQF" else _CODE if chr(c) i
                       else _LETTER if chr(c).isascii() and chr(c).isalpha() else 0 for c in range(256))
 """Per byte, the letter it is to the scan (0: not a letter)."""
 _MAX_FRACTION: Final = 6
+_I64_DIGITS: Final = 18
+"""The most digits a block number summed as an ``i64`` may have (a longer one, leading zeros and all, by ``int``)."""
 _LETTERS: Final[list[str]] = [chr(c) for c in range(128)]
 """An ASCII byte's character (compiled: a list item, not a one-character slice of the line)."""
 
@@ -121,10 +123,15 @@ def _scan(text: str, keep: bool) -> tuple[int, list[tuple[str, str]], int, i64]:
         digits = i
         first_n = (c == 78 or c == 110) and count == 0  # 'N', 'n' first: its number is the block's
         if first_n:
-            sequence = 0
+            number: i64 = 0  # (a machine integer: no checked multiplication a digit; summed up to 18 digits)
             while i < n and 48 <= b[i] <= 57:
-                sequence = sequence * 10 + b[i] - 48
+                if i - digits < _I64_DIGITS:
+                    d: i64 = b[i]
+                    number = number * 10 + (d - 48)
                 i += 1
+            sequence = number
+            if i - digits > _I64_DIGITS:
+                sequence = int(text[digits:i])
         else:
             while i < n and 48 <= b[i] <= 57:
                 i += 1
