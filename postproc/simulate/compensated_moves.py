@@ -324,14 +324,20 @@ class CompensatedMoves(Position):
         shifts = self.lathe_shift
         shifted = len(shifts) != 0
         length_at = self.length_index if offset else -1
-        rounded: list[float | int] = []
+        kept = all_as_written(target)  # ``target`` is the point as written (as ``_offset_line``'s)
+        values: list[Any] = target
+        rounded: list[Any] = target if kept else []
         crounded: list[float | int] = []
         apart = False
         axes = self.axes
         for k in range(len(axes)):  # (a value no offset moves is its programmed number: ``num`` once, not twice)
             value = target[k]
-            r = num(value)
-            rounded.append(r)
+            r: Any
+            if kept:
+                r = values[k]
+            else:
+                r = num(value)
+                rounded.append(r)
             cr = r
             shift = shifts.get(axes[k]) if shifted else None
             if k == length_at or shift is not None:

@@ -34,24 +34,10 @@ float, the value's error in units is below 0.012 (half an ulp), and a whole numb
 _TIE: Final = 2.3e-16
 """Relative error of ``value * _SCALE`` (a product's half ulp, 2**-53, with margin): a fraction of a
 unit that close to one half may lie on the other side of it, and goes to ``round``."""
-_NAN: Final = float("nan")
+_LARGEST: Final = 1e8
+"""``as_written`` decides below this (a whole number of millionths below 1e14, exact in a float)."""
 assert _UNITS == 10 ** PLACES == _SCALE
 # Final: compiled, a constant is a C constant, not a look-up in the module's dictionary (six a call)
-
-
-def _nearest_units(value: float) -> float:
-    """``value`` in millionths rounded to the nearest whole one (a float holding a whole number), or nan where this
-    arithmetic does not decide: beyond ``_FAST`` units, nan, or a fraction of a unit too near one half (``num``
-    then takes ``round``). The one rounding of ``num`` and ``as_written``."""
-    y = value * _SCALE
-    if -_FAST < y < _FAST:  # false for nan; an infinity is beyond
-        whole = float(i64(y))  # (a machine integer, |y| < 2**47: compiled, no tagged int's checks)
-        if whole > y:
-            whole -= 1.0  # the floor
-        fraction = y - whole  # exact: both below 2**47
-        if abs(fraction - 0.5) > abs(y) * _TIE:
-            return whole + 1.0 if fraction > 0.5 else whole
-    return _NAN
 
 
 def num(value: float) -> float | int:
@@ -61,15 +47,24 @@ def num(value: float) -> float | int:
     ``round(value, 6)`` is the float nearest the decimal that rounds the value to six places, half to
     even; it costs a correctly rounded decimal conversion (about 2,500 instructions, five a move). The
     same result by integer arithmetic: the value in millionths, rounded to the nearest whole one (the
-    product's error is far from a half but for near-ties, which go to ``round``: ``_nearest_units``), then
-    divided by a million (one correctly rounded division of two exact floats: the float nearest the same decimal).
+    product's error is far from a half but for near-ties, which go to ``round``), then divided by a
+    million (one correctly rounded division of two exact floats: the float nearest the same decimal).
     ``tests/test_toolpath_numbers.py`` holds it to ``round`` on any float and on near-ties."""
-    whole = _nearest_units(value)
-    if whole == whole:
-        units = i64(whole)
-        if units % _UNITS == 0:
-            return units // _UNITS  # 0 for -0.0 too
-        return whole / _SCALE
+    y = value * _SCALE
+    if -_FAST < y < _FAST:  # false for nan; an infinity is beyond
+        units = i64(y)  # (a machine integer, |units| < 2**47: compiled, no tagged int's checks at each step)
+        whole = float(units)
+        if whole > y:
+            units -= 1  # the floor
+            whole -= 1.0
+        fraction = y - whole  # exact: both below 2**47
+        if abs(fraction - 0.5) > abs(y) * _TIE:
+            if fraction > 0.5:
+                units += 1
+                whole += 1.0
+            if units % _UNITS == 0:
+                return units // _UNITS  # 0 for -0.0 too
+            return whole / _SCALE
     r = round(value, PLACES)
     if r == 0:
         return 0
@@ -82,13 +77,18 @@ def num(value: float) -> float | int:
 
 
 def as_written(value: float) -> bool:
-    """``num(value)`` is a float equal to ``value``: a whole number of millionths that is not integral (``num``
-    writes an integral value as an int), as a CAM program's coordinates are. Such a float stands for its
-    toolpath number as it is, so a move of such values keeps its end point's list as the point it writes
-    (``all_as_written``) rather than making a list and a float an axis (``tests/test_toolpath_numbers.py``
-    holds it to ``num``)."""
-    whole = _nearest_units(value)
-    return whole == whole and i64(whole) % _UNITS != 0 and whole / _SCALE == value
+    """``num(value)`` is a float equal to ``value``: a whole number ``k`` of millionths that is not integral (``num``
+    writes an integral value as an int), as a CAM program's coordinates are. Such a float stands for its toolpath
+    number as it is, so a move of such values keeps its end point's list as the point it writes (``all_as_written``)
+    rather than making a list and a float an axis. The test: ``value`` is the float nearest ``k / 10**6``, ``k`` its
+    millionths rounded (then ``round(value, 6)``, the float nearest the six-place decimal nearest ``value``, is
+    ``value`` itself: that decimal is ``k / 10**6``, six-place decimals lying far wider apart than a float's ulp
+    below 1e8); beyond 1e8 never (the general path calls ``num``). ``tests/test_toolpath_numbers.py`` holds it
+    to ``round``."""
+    if -_LARGEST < value < _LARGEST:  # false for nan
+        units = i64(value * _SCALE + (0.5 if value > 0.0 else -0.5))  # (|units| < 1e14: exact as a float)
+        return float(units) / _SCALE == value and units % _UNITS != 0
+    return False
 
 
 def all_as_written(values: list[float]) -> bool:

@@ -86,10 +86,11 @@ class Moves(CompensatedMoves):
             if axis not in (a1, a2):
                 raise ProgramError(f"arc centre offset along {axis} is outside the {plane} plane",
                                    self._at(block, CENTRE_LETTER.get(axis, "G")))
-            if isinstance(value, Expr):
+            if not isinstance(value, float) and isinstance(value, Expr):  # (a float first: ``Expr`` is no native
+                # class, its test a generic ``isinstance``, ~250 instructions compiled)
                 raise ProgramError(UNEVALUATED, self._at(block, CENTRE_LETTER.get(axis, "G")))
             offsets[axis] = value * scale
-        if isinstance(m.radius, Expr):
+        if m.radius is not None and not isinstance(m.radius, float) and isinstance(m.radius, Expr):
             raise ProgramError(UNEVALUATED, self._at(block, "R"))
         radius = None if m.radius is None else m.radius * scale
         try:
