@@ -249,14 +249,6 @@ class _KeyTexts:
         whole parts after it, for the keys ``keys``."""
         self.f_firsts: dict[str, _KeyedNumbers] = {}
         """Each ``f_first`` made for ``keys``, by its text (a program's feeds are a few, met again and again)."""
-        self.centre_keys: tuple[str, ...] = ()
-        self.centre_later: list[_KeyedNumbers] = []
-        """An arc's centre keys (``MoveRecord.centre_keys``: one tuple a simulation), kept for the tuple met last, each
-        after another item (``', "cx": '``), with the numbers after it."""
-
-    def update_centre(self, centre_keys: tuple[str, ...]) -> None:
-        self.centre_keys = centre_keys
-        self.centre_later = [_KeyedNumbers(_key_text(key, True)) for key in centre_keys]
 
     def update(self, keys: tuple[str, ...]) -> None:
         self.keys = keys
@@ -338,37 +330,24 @@ def _number_parts(value: float | int, parts: list[str]) -> None:
         parts.append(str(value))
 
 
-_UNTABLED: Final = -(1 << 40)
-"""What ``_keyed_number_parts`` returns where it wrote the key alone, not joined with the number's whole part."""
-
-
-def _keyed_number_parts(value: float | int, keyed: _KeyedNumbers, parts: list[str]) -> i64:
+def _keyed_number_parts(value: float | int, keyed: _KeyedNumbers, parts: list[str]) -> None:
     """A record's key and its number as json writes them (``keyed.text``, then ``_number_parts``), the key and the
-    number's whole part in one piece where it is tabled (``_KeyedNumbers``). Returns that whole part (``-1 - whole``
-    for a negative number), or ``_UNTABLED``: another key's piece with the same number is ``_keyed_whole``."""
+    number's whole part in one piece where it is tabled (``_KeyedNumbers``)."""
     if isinstance(value, float):
-        return _keyed_float_parts(value, keyed, parts, None)
-    if 0 <= value < _TABLED:
+        _keyed_float_parts(value, keyed, parts, None)
+    elif 0 <= value < _TABLED:
         parts.append(keyed.whole(value, False))
-        return value
-    if -_TABLED < value < 0:
+    elif -_TABLED < value < 0:
         parts.append(keyed.whole(-value, True))
-        return value - 1  # (-1 - whole, the whole part being -value)
-    parts.append(keyed.text)
-    parts.append(str(value))
-    return _UNTABLED
+    else:
+        parts.append(keyed.text)
+        parts.append(str(value))
 
 
-def _keyed_whole(keyed: _KeyedNumbers, code: i64) -> str:
-    """The piece of ``keyed`` with the whole part ``code`` (``_keyed_number_parts``' result, not ``_UNTABLED``)."""
-    return keyed.whole(code, False) if code >= 0 else keyed.whole(-1 - code, True)
-
-
-def _keyed_float_parts(value: float, keyed: _KeyedNumbers, parts: list[str], tail: _Tail | None) -> i64:
+def _keyed_float_parts(value: float, keyed: _KeyedNumbers, parts: list[str], tail: _Tail | None) -> None:
     """``_keyed_number_parts`` of a float (a float parameter: compiled, unboxed once, where a union's value was
     unboxed again at each comparison; the units machine integers, ``i64``, not tagged ones checked at each step).
-    ``tail``: the fixed text that follows the number (``_CLOSING``), a short fraction joined with it in one piece.
-    Returns as ``_keyed_number_parts``."""
+    ``tail``: the fixed text that follows the number (``_CLOSING``), a short fraction joined with it in one piece."""
     if _SMALLEST <= value < _LARGEST or -_LARGEST < value <= -_SMALLEST:  # (as ``_float_parts``)
         units = i64(value * _SCALE + (0.5 if value > 0.0 else -0.5))
         if float(units) / _SCALE == value:
@@ -387,16 +366,15 @@ def _keyed_float_parts(value: float, keyed: _KeyedNumbers, parts: list[str], tai
                     else:
                         text = tail.shorts[index]
                         parts.append(text if text is not None else tail.short(index))
-                else:
-                    _fraction_parts(fraction, parts)
-                    if tail is not None:
-                        parts.append(tail.text)
-                return -1 - whole if negative else whole
+                    return
+                _fraction_parts(fraction, parts)
+                if tail is not None:
+                    parts.append(tail.text)
+                return
     parts.append(keyed.text)
     _float_parts(value, parts)
     if tail is not None:
         parts.append(tail.text)
-    return _UNTABLED
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -467,10 +445,7 @@ with its last short fraction."""
 def _record_parts(record: MoveRecord, parts: list[str], line_end: bool) -> None:
     """Append the JSON text of ``record`` (``MoveRecord.event()``'s, with its closing brace and, where ``line_end``,
     the line end): field by field, in the order ``event()`` gives its keys, with no look-up or type test of a key
-    (``tests/test_toolpath_numbers.py`` holds it to json's text of ``event()``). The first axes whose controlled
-    number is the programmed number itself (a tool length moves Z alone: X and Y are the same objects) are spelt
-    once: the controlled point repeats their pieces after its first key's (an identity test an axis, a copied piece
-    where a number was spelt again: ~250 instructions a move under a tool length, callgrind, branch simfast9)."""
+    (``tests/test_toolpath_numbers.py`` holds it to json's text of ``event()``)."""
     texts = _RECORD_KEYS
     keys = record.keys
     if keys is not texts.keys:
@@ -479,41 +454,24 @@ def _record_parts(record: MoveRecord, parts: list[str], line_end: bool) -> None:
     _line_kind_parts(record.line, texts.kind_texts if kind is texts.kind else texts.kind_of(kind), parts)
     later = texts.later
     point = record.point
-    controlled = record.controlled
-    ccentre = record.ccentre
-    n = len(keys)
-    last = n - 1 if line_end and ccentre is None else -1  # the controlled number the closing follows (-1: none)
-    shared = 0  # the first axes whose controlled number is the programmed one (a tool length moves Z alone)
-    if controlled is not None:
-        most = last if last >= 0 else n
-        while shared < most and controlled[shared] is point[shared]:
-            shared += 1
-    start = len(parts) + 1  # where the first axis's pieces after its key's piece will be
-    stop = start  # and where the shared axes' pieces end
-    code: i64 = _UNTABLED  # the first axis's whole part (``_keyed_number_parts``)
-    for i in range(n):
+    for i in range(len(keys)):
         value = point[i]
         if isinstance(value, float):  # (most often: the float's own call, not through the union's)
-            whole = _keyed_float_parts(value, later[i], parts, None)
+            _keyed_float_parts(value, later[i], parts, None)
         else:
-            whole = _keyed_number_parts(value, later[i], parts)
-        if i == 0:
-            code = whole
-        if i + 1 == shared:
-            stop = len(parts)
+            _keyed_number_parts(value, later[i], parts)
     centre = record.centre
     if centre is not None:  # an arc: its centre and plane
         centre_keys = record.centre_keys
-        if centre_keys is not texts.centre_keys:
-            texts.update_centre(centre_keys)
-        centre_later = texts.centre_later
         for i in range(len(centre_keys)):
-            _keyed_number_parts(centre[i], centre_later[i], parts)
+            parts.append(_key_text(centre_keys[i], True))
+            _number_parts(centre[i], parts)
         parts.append(_KEY_PLANE)
         plane = record.plane
         parts.append("null" if plane is None else _word_text(plane))
     f = record.f
     mode = record.feed_mode
+    controlled = record.controlled
     joined = False  # the feed's text joined with the controlled point's first key (``_KeyTexts.f_first``)
     if f is not None:
         if f is not texts.f:  # (identity: the same object has the same text; an equal one is spelt again)
@@ -528,6 +486,7 @@ def _record_parts(record: MoveRecord, parts: list[str], line_end: bool) -> None:
     if controlled is None:
         parts.append(_CLOSE_LINE if line_end else _CLOSE)
         return
+    ccentre = record.ccentre
     if not keys:
         parts.append(_KEY_CONTROLLED)
         if ccentre is None or not record.centre_keys:
@@ -535,14 +494,8 @@ def _record_parts(record: MoveRecord, parts: list[str], line_end: bool) -> None:
             parts.append(_CLOSE_LINE if line_end else _CLOSE)
             return
     first = texts.first
-    begin = 0
-    if shared > 0 and code != _UNTABLED:  # the shared axes' pieces as written above: the first axis's whole part
-        # with its key here, then the same pieces again (~150 instructions an axis less than spelling its number)
-        parts.append(_keyed_whole(texts.f_first if joined else first[0], code))
-        for k in range(start, stop):
-            parts.append(parts[k])
-        begin = shared
-    for i in range(begin, n):
+    last = len(keys) - 1 if line_end and ccentre is None else -1  # the number the closing follows (-1: none)
+    for i in range(len(keys)):
         value = controlled[i]
         keyed = texts.f_first if joined and i == 0 else first[i]
         if i == last:
@@ -558,14 +511,9 @@ def _record_parts(record: MoveRecord, parts: list[str], line_end: bool) -> None:
             _keyed_number_parts(value, keyed, parts)
     if ccentre is not None:
         centre_keys = record.centre_keys
-        if n > 0 and centre_keys is texts.centre_keys:  # (an arc's: its point written above, its centre's texts kept)
-            centre_later = texts.centre_later
-            for i in range(len(centre_keys)):
-                _keyed_number_parts(ccentre[i], centre_later[i], parts)
-        else:
-            for i in range(len(centre_keys)):
-                parts.append(_key_text(centre_keys[i], i > 0 or n > 0))
-                _number_parts(ccentre[i], parts)
+        for i in range(len(centre_keys)):
+            parts.append(_key_text(centre_keys[i], i > 0 or len(keys) > 0))
+            _number_parts(ccentre[i], parts)
     parts.append(_CLOSE_BOTH_LINE if line_end else _CLOSE_BOTH)
 
 

@@ -35,7 +35,7 @@ _TIE: Final = 2.3e-16
 """Relative error of ``value * _SCALE`` (a product's half ulp, 2**-53, with margin): a fraction of a
 unit that close to one half may lie on the other side of it, and goes to ``round``."""
 _LARGEST: Final = 1e8
-"""``as_written`` decides below this (a whole number of millionths below 1e14, exact in a float)."""
+"""``all_as_written`` decides below this (a whole number of millionths below 1e14, exact in a float)."""
 assert _UNITS == 10 ** PLACES == _SCALE
 # Final: compiled, a constant is a C constant, not a look-up in the module's dictionary (six a call)
 
@@ -76,25 +76,22 @@ def num(value: float) -> float | int:
     return r
 
 
-def as_written(value: float) -> bool:
-    """``num(value)`` is a float equal to ``value``: a whole number ``k`` of millionths that is not integral (``num``
-    writes an integral value as an int), as a CAM program's coordinates are. Such a float stands for its toolpath
-    number as it is, so a move of such values keeps its end point's list as the point it writes (``all_as_written``)
-    rather than making a list and a float an axis. The test: ``value`` is the float nearest ``k / 10**6``, ``k`` its
-    millionths rounded (then ``round(value, 6)``, the float nearest the six-place decimal nearest ``value``, is
-    ``value`` itself: that decimal is ``k / 10**6``, six-place decimals lying far wider apart than a float's ulp
-    below 1e8); beyond 1e8 never (the general path calls ``num``). ``tests/test_toolpath_numbers.py`` holds it
-    to ``round``."""
-    if -_LARGEST < value < _LARGEST:  # false for nan
-        units = i64(value * _SCALE + (0.5 if value > 0.0 else -0.5))  # (|units| < 1e14: exact as a float)
-        return float(units) / _SCALE == value and units % _UNITS != 0
-    return False
-
-
 def all_as_written(values: list[float]) -> bool:
-    """Every value of a point ``as_written``: the list is the point as its event writes it (``num`` of each)."""
+    """``num`` of every value is a float equal to it: each a whole number ``k`` of millionths that is not integral
+    (``num`` writes an integral value as an int), as a CAM program's coordinates are. Such a point's list stands
+    for the point its event writes as it is: a move keeps its end point's list rather than making a list and a
+    float an axis (``CompensatedMoves._offset_line``). The test, a value at a time: it is the float nearest
+    ``k / 10**6``, ``k`` its millionths rounded (then ``round(value, 6)``, the float nearest the six-place decimal
+    nearest the value, is the value itself: that decimal is ``k / 10**6``, six-place decimals lying far wider
+    apart than a float's ulp below 1e8); beyond 1e8 never (the general path calls ``num``). One loop, no call a
+    value (compiled, ~80 instructions a value where a call each cost ~140). ``tests/test_toolpath_numbers.py``
+    holds it to ``round``."""
     for i in range(len(values)):
-        if not as_written(values[i]):
+        value = values[i]
+        if not -_LARGEST < value < _LARGEST:  # (also nan)
+            return False
+        units = i64(value * _SCALE + (0.5 if value > 0.0 else -0.5))  # (|units| < 1e14: exact as a float)
+        if float(units) / _SCALE != value or units % _UNITS == 0:
             return False
     return True
 

@@ -247,13 +247,14 @@ class Position:
             # callgrind, branch simfast8)
             axis = names[i]
             word = axes.get(axis)
+            kept: Any = word  # (the word's object as it is: compiled, a narrowed float is unboxed and boxed again)
             if word is None or increments is not None and axis in increments:
                 continue  # (an address that is an increment is the second loop's)
             found += 1
             factor = factors[i]
             if isinstance(word, float):  # a float first: one type test a word
                 if factor == 1.0 and not incremental and shift is None:
-                    held[i] = word  # the word's own float (``word * 1.0`` is it): none made, none freed at the next move
+                    held[i] = kept  # the word's own float (``word * 1.0`` is it): none made, none freed at the next move
                     continue
             elif isinstance(word, Expr):
                 raise ProgramError(UNEVALUATED, self._at(block, axis))
