@@ -16,6 +16,7 @@ from postproc.errors import ProgramError
 from postproc.commands.export import event_encoder
 from postproc.simulate.event_text import EventValueError, event_text, float_text, write_lines
 from postproc.simulate.move_record import MoveRecord
+from postproc.simulate.events import all_as_written
 from postproc.simulate.toolpath import num
 
 
@@ -90,6 +91,41 @@ def test_num_is_round_on_near_ties_too(value: float) -> None:
 def test_num_is_round_at_chosen_ties(value: float) -> None:
     written, expected = num(value), _by_round(value)
     assert type(written) is type(expected) and written == expected
+
+
+def _written_as_is(value: float) -> bool:
+    """``num(value)`` is a float equal to ``value`` (by ``round``: ``_by_round``), for a value num accepts."""
+    if not math.isfinite(value):
+        return False
+    expected = _by_round(value)
+    return type(expected) is float and expected == value
+
+
+@settings(max_examples=3000, deadline=None)
+@given(value=st.one_of(_near_ties(), _near_ties().map(num).map(float), st.floats(allow_nan=True, allow_infinity=True),
+                       st.sampled_from([0.0, -0.0, 1.0, -3.0, 0.3008, -41.6654, 1e-6, -1e-6, 5e-7, 1e8 + 0.5])))
+def test_as_written_is_num_leaving_a_float_as_it_is(value: float) -> None:
+    """``all_as_written`` of one value is "num gives a float equal to the value": never for an integral value (an int in the JSON
+    line), a near tie num rounds away, nan or an infinity; below 1e8 (the range of ``num``'s integer arithmetic)
+    exactly that, beyond it never (such a value takes the general path, which calls ``num``)."""
+    if all_as_written([value]):
+        assert _written_as_is(value)
+    elif abs(value) < 1e8:
+        assert not _written_as_is(value)
+
+
+@settings(max_examples=300, deadline=None)
+@given(values=st.lists(st.one_of(_near_ties(), _near_ties().map(num).map(float), st.integers(-5, 5).map(float)),
+                       max_size=6))
+def test_all_as_written_is_every_value_as_written(values: list[float]) -> None:
+    assert all_as_written(values) is all(_written_as_is(v) for v in values)
+
+
+@pytest.mark.parametrize("text", ["0.3008", "-3.956", "-41.6654", "12.5", "0.000001", "99999999.999999"])
+def test_a_cam_programs_decimals_are_as_written(text: str) -> None:
+    """The values the shortcut is for: a word's decimal of at most six places, not integral (hand-checked: each is
+    the float ``round(value, 6)`` gives back)."""
+    assert all_as_written([float(text)]) and not all_as_written([float(text.split(".")[0] + ".0")])
 
 
 @settings(max_examples=2000, deadline=None)

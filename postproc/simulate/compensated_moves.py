@@ -18,7 +18,7 @@ from ..geometry.arcs import CENTRE_KEYS
 from ..ir import Block
 from ..lowering.inverse_time import move_length
 from ..ir.state import PLANE_AXES
-from .events import CUTTER_RADIUS, LATHE_TOOL_OFFSET, TOOL_LENGTH, Event, differs, num
+from .events import CUTTER_RADIUS, LATHE_TOOL_OFFSET, TOOL_LENGTH, Event, all_as_written, differs, num
 from .move_record import Emitted, MoveRecord
 from .position import LENGTH_AXIS, Position, point_dict
 
@@ -264,25 +264,34 @@ class CompensatedMoves(Position):
         """A straight move under a tool length alone (a whole program after its G43): ``_write``'s result,
         the programmed point rounded only on the axes that move (as ``line_move``). One pass over the axes
         builds both points (the record's lists): the values stay the objects ``num`` made (an int stays an int
-        in the JSON line), compared per axis rather than as dictionaries."""
+        in the JSON line), compared per axis rather than as dictionaries. Where every value of ``target`` is as
+        ``num`` writes it (``all_as_written``: a CAM program's move), ``target`` itself is the programmed point:
+        no list, no float an axis made and freed (~600 instructions a move, callgrind, branch simfast9)."""
         at, rounded, before = self.at, self.rounded, self.crounded
         offset = self.length.offset
         shifts = self.lathe_shift
         shifted = len(shifts) != 0  # (tested once, not an axis: a mill has none)
         length_at = self.length_index
         axes = self.axes
-        point: list[float | int] = []
+        kept = all_as_written(target)  # (a CAM program's move: ``target`` is the point as written, no list made)
+        values: list[Any] = target  # (its items as the objects they are: compiled, not a float unboxed and boxed)
+        point: list[Any] = target if kept else []
         crounded: list[float | int] = []
         moved = apart = False
         f: float | int | None = None
         mode: str | None = None
         for i in range(len(axes)):
-            value = target[i]
-            r: Any = rounded[i] if value == at[i] else num(value)
-            point.append(r)  # (appended: compiled, ``[0] * n`` and a store by index cost ~600 instructions a move
-            # more, a list repeated through Python; callgrind, branch simfast3)
+            r: Any
+            if kept:
+                r = values[i]
+            else:
+                value = target[i]
+                r = rounded[i] if value == at[i] else num(value)
+                point.append(r)  # (appended: compiled, ``[0] * n`` and a store by index cost ~600 instructions a
+                # move more, a list repeated through Python; callgrind, branch simfast3)
             c: Any = r
             if i == length_at or shifted:  # (the controlled value is the programmed one but on an offset's axes)
+                value = target[i]
                 shift = shifts.get(axes[i]) if shifted else None
                 if shift is not None:
                     c = num(value + shift + (offset if i == length_at else 0.0))
@@ -315,14 +324,20 @@ class CompensatedMoves(Position):
         shifts = self.lathe_shift
         shifted = len(shifts) != 0
         length_at = self.length_index if offset else -1
-        rounded: list[float | int] = []
+        kept = all_as_written(target)  # ``target`` is the point as written (as ``_offset_line``'s)
+        values: list[Any] = target
+        rounded: list[Any] = target if kept else []
         crounded: list[float | int] = []
         apart = False
         axes = self.axes
         for k in range(len(axes)):  # (a value no offset moves is its programmed number: ``num`` once, not twice)
             value = target[k]
-            r = num(value)
-            rounded.append(r)
+            r: Any
+            if kept:
+                r = values[k]
+            else:
+                r = num(value)
+                rounded.append(r)
             cr = r
             shift = shifts.get(axes[k]) if shifted else None
             if k == length_at or shift is not None:

@@ -34,6 +34,8 @@ float, the value's error in units is below 0.012 (half an ulp), and a whole numb
 _TIE: Final = 2.3e-16
 """Relative error of ``value * _SCALE`` (a product's half ulp, 2**-53, with margin): a fraction of a
 unit that close to one half may lie on the other side of it, and goes to ``round``."""
+_LARGEST: Final = 1e8
+"""``all_as_written`` decides below this (a whole number of millionths below 1e14, exact in a float)."""
 assert _UNITS == 10 ** PLACES == _SCALE
 # Final: compiled, a constant is a C constant, not a look-up in the module's dictionary (six a call)
 
@@ -72,6 +74,26 @@ def num(value: float) -> float | int:
         raise ProgramError(f"a value beyond the range of a float ({value!r}) cannot be simulated"
                            if value == value else "a value that is not a number (nan) cannot be simulated")
     return r
+
+
+def all_as_written(values: list[float]) -> bool:
+    """``num`` of every value is a float equal to it: each a whole number ``k`` of millionths that is not integral
+    (``num`` writes an integral value as an int), as a CAM program's coordinates are. Such a point's list stands
+    for the point its event writes as it is: a move keeps its end point's list rather than making a list and a
+    float an axis (``CompensatedMoves._offset_line``). The test, a value at a time: it is the float nearest
+    ``k / 10**6``, ``k`` its millionths rounded (then ``round(value, 6)``, the float nearest the six-place decimal
+    nearest the value, is the value itself: that decimal is ``k / 10**6``, six-place decimals lying far wider
+    apart than a float's ulp below 1e8); beyond 1e8 never (the general path calls ``num``). One loop, no call a
+    value (compiled, ~80 instructions a value where a call each cost ~140). ``tests/test_toolpath_numbers.py``
+    holds it to ``round``."""
+    for i in range(len(values)):
+        value = values[i]
+        if not -_LARGEST < value < _LARGEST:  # (also nan)
+            return False
+        units = i64(value * _SCALE + (0.5 if value > 0.0 else -0.5))  # (|units| < 1e14: exact as a float)
+        if float(units) / _SCALE != value or units % _UNITS == 0:
+            return False
+    return True
 
 
 def start_position(setup: MachineSetup) -> dict[str, float]:

@@ -5,7 +5,7 @@ dispatch that drives them is ``postproc.simulate.simulator``; what the simulator
 
 from __future__ import annotations
 
-from typing import Callable
+from typing import Callable, Union, cast
 
 from mypy_extensions import mypyc_attr
 
@@ -14,7 +14,7 @@ from ..errors import ProgramError
 from ..ir.expr import Expr
 from ..ir import Block, Motion
 from ..ir.state import PLANE_AXES
-from .events import UNEVALUATED, Event, num
+from .events import UNEVALUATED, Event, all_as_written, num
 from .compensated_moves import CompensatedMoves
 from .move_record import Emitted, MoveRecord
 from .position import CENTRE_LETTER, PATH_CONTROL as PATH_CONTROL, point_dict
@@ -33,11 +33,15 @@ class Moves(CompensatedMoves):
                 self._compensated(kind, target, line, None, None)
             return
         at = self.at
-        rounded = list(self.rounded)
-        for i in range(len(at)):
-            value = target[i]
-            if value != at[i]:
-                rounded[i] = num(value)
+        rounded: list[float | int]
+        if all_as_written(target):  # the point as written: ``target`` itself (``CompensatedMoves._offset_line``)
+            rounded = cast(list[Union[float, int]], target)
+        else:
+            rounded = list(self.rounded)
+            for i in range(len(at)):
+                value = target[i]
+                if value != at[i]:
+                    rounded[i] = num(value)
         if rounded == self.rounded:
             self.at = target
             if self.mark_held:  # ``verify --transform`` may move it to somewhere else (``mark_held``)
@@ -82,10 +86,11 @@ class Moves(CompensatedMoves):
             if axis not in (a1, a2):
                 raise ProgramError(f"arc centre offset along {axis} is outside the {plane} plane",
                                    self._at(block, CENTRE_LETTER.get(axis, "G")))
-            if isinstance(value, Expr):
+            if not isinstance(value, float) and isinstance(value, Expr):  # (a float first: ``Expr`` is no native
+                # class, its test a generic ``isinstance``, ~250 instructions compiled)
                 raise ProgramError(UNEVALUATED, self._at(block, CENTRE_LETTER.get(axis, "G")))
             offsets[axis] = value * scale
-        if isinstance(m.radius, Expr):
+        if m.radius is not None and not isinstance(m.radius, float) and isinstance(m.radius, Expr):
             raise ProgramError(UNEVALUATED, self._at(block, "R"))
         radius = None if m.radius is None else m.radius * scale
         try:

@@ -7,7 +7,7 @@ The offsets that move a controlled point and the moves themselves are its subcla
 from __future__ import annotations
 
 import math
-from typing import Callable, Final
+from typing import Any, Callable, Final
 
 from mypy_extensions import mypyc_attr
 
@@ -238,6 +238,7 @@ class Position:
         shift = self.shift if not machine and not incremental and len(self.shift) else None  # (tested once)
         increments = self.increments if len(self.increments) else None  # empty on a mill: tested once, not a word
         factors = self.factors
+        held: list[Any] = out  # (its items as objects: compiled, a word's float stored as it is, not unboxed and boxed)
         names = self.axes
         found = 0
         for i in range(len(names)):  # the machine's axes first, each looked up (the words of a block are most
@@ -246,12 +247,18 @@ class Position:
             # callgrind, branch simfast8)
             axis = names[i]
             word = axes.get(axis)
+            kept: Any = word  # (the word's object as it is: compiled, a narrowed float is unboxed and boxed again)
             if word is None or increments is not None and axis in increments:
                 continue  # (an address that is an increment is the second loop's)
             found += 1
-            if not isinstance(word, float) and isinstance(word, Expr):  # a float first: one type test a word
+            factor = factors[i]
+            if isinstance(word, float):  # a float first: one type test a word
+                if factor == 1.0 and not incremental and shift is None:
+                    held[i] = kept  # the word's own float (``word * 1.0`` is it): none made, none freed at the next move
+                    continue
+            elif isinstance(word, Expr):
                 raise ProgramError(UNEVALUATED, self._at(block, axis))
-            v = word * factors[i]
+            v = word * factor
             out[i] = at[i] + v if incremental else v + shift.get(axis, 0.0) if shift is not None else v
         if found == len(axes):
             return out
