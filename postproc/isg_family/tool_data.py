@@ -95,13 +95,15 @@ def expects_register(values: dict[str, Any], ctx: Context, first: int) -> None:
 class ResolveRadiusWhereDCannot(LoweringStep):
     """Lowering step for a target whose D brings its length (ISG always; Fagor while ``G43`` is on,
     ``LENGTH_TOGGLES``): a G41/G42 whose register has another length than the one in force becomes the
-    compensated path (see the module docstring)."""
+    compensated path (see the module docstring). It runs after the tool length timing, which decides that length,
+    and it is the translation's one resolver: it resolves G41.1/G42.1 too, the generic step handing over to it
+    (``postproc.lowering.cutter_compensation.TARGET_RESOLVES``)."""
 
     def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
         if ctx.dialect == target.NAME:
             return None
         from ..lowering.cutter_compensation import resolution_unless
-        return resolution_unless(ctx, _d_keeps_the_length_on if target.LENGTH_TOGGLES else _d_keeps_the_length)
+        return resolution_unless(ctx, target, _d_keeps_the_length_on if target.LENGTH_TOGGLES else _d_keeps_the_length)
 
 
 resolve_radius_where_d_cannot = ResolveRadiusWhereDCannot()
