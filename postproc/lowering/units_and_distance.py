@@ -10,7 +10,7 @@ and absolute, as ``ModalState`` and the simulation start.
 
 from __future__ import annotations
 
-from typing import Final, Mapping
+from typing import Final
 
 from mypy_extensions import mypyc_attr
 
@@ -31,14 +31,16 @@ class UnitsAndDistance:
         self.scale = 1.0
         """Millimetres per program unit."""
 
-    def absolute_in(self, sections: Mapping[str, Section]) -> bool:
+    def absolute_in(self, sections: dict[str, Section]) -> bool:
         """Whether a block runs in absolute positions: its own distance mode, else the one in force (asked before
         ``follow`` takes the block)."""
         distance = sections.get("DistanceMode")
         return distance.mode != "incremental" if isinstance(distance, DistanceMode) else self.absolute
 
-    def follow(self, sections: Mapping[str, Section]) -> bool:
-        """Take a block's units and distance mode; True where its units are not the ones in force before it."""
+    def follow(self, sections: dict[str, Section]) -> bool:
+        """Take a block's units and distance mode; True where its units are not the ones in force before it. (A
+        ``dict``, not a ``Mapping``: compiled, a ``Mapping``'s ``get`` is a method call, ~45 instructions a block
+        more over the steps, callgrind.)"""
         distance = sections.get("DistanceMode")
         if isinstance(distance, DistanceMode):
             self.absolute = distance.mode != "incremental"
