@@ -255,3 +255,49 @@ def test_the_source_simulation_gives_the_rates_rs274_gives() -> None:
     assert len(ours) == len(theirs)
     for n, (a, b) in enumerate(zip(ours, theirs)):
         assert a[0] == b[0] and math.dist(a[1:3], b[1:3]) <= 0.0018 and abs(a[3] - b[3]) <= 0.01, (n, a, b)
+
+
+SPINDLE_STOP_AT_A_CORNER = """G21 G17 G90 G40
+G0 X-5 Y-5 Z5 M3 S1000
+G41.1 D4
+G1 X0 Y0 F100
+X10 M5
+Y10 M9
+X0
+G40 G1 X-5 Y-5
+M2
+"""
+"""``X10 M5`` turns an outside corner: rs274 stops the spindle before the block's motion, and the corner's arc is
+that block's motion (its canonical calls: ``STRAIGHT_FEED(-1.4142, 1.4142, ..)``, ``STOP_SPINDLE_TURNING``,
+``ARC_FEED(0, 2, ..)``, ``STRAIGHT_FEED(8, 2, ..)``; order of execution: spindle before motion)."""
+
+
+@pytest.mark.parametrize("target", ["isg", "fagor"])
+def test_a_spindle_stop_at_an_outside_corner_goes_before_its_arc(target: str) -> None:
+    """An ISG-family target has one resolver, after its own split of stops before motion (the generic step hands
+    over to it, ``cutter_compensation.TARGET_RESOLVES``): the M05 comes before the corner's arc, as rs274 runs it.
+    Resolved before that split, the arc came first and the spindle stopped one move late."""
+    lines = _translated(SPINDLE_STOP_AT_A_CORNER, target).splitlines()
+    stop = lines.index("M05")
+    arc = next(n for n, line in enumerate(lines) if line.startswith("G02"))
+    assert lines[stop - 1].startswith("G01 X-1.414214 Y1.414214") and arc == stop + 1, lines
+    assert lines[arc + 1].startswith("G01 X8. Y2."), lines
+
+
+@needs_rs274
+def test_rs274_stops_the_spindle_before_the_corner_arc() -> None:
+    """The oracle of the order above."""
+    events = canonical_moves(run_rs274(SPINDLE_STOP_AT_A_CORNER), start=(0.0, 0.0, 0.0))
+    stop = events.index({"event": "spindle", "dir": "stop"})
+    assert events[stop + 1].get("move") == "cw" and events[stop - 1].get("move") == "feed", events[stop - 2:stop + 2]
+
+
+def test_inverse_time_under_compensation_towards_isg_writes_one_g94() -> None:
+    """Towards ISG (no G93) the feeds are per minute before its one resolver runs: the resolved stretch needs no G94
+    of its own beside the one that replaces G93 (two were written before)."""
+    text = ("G21 G17 G90 G40\nG0 X-5 Y-5 Z5\nG93\nG41.1 D4\nG1 X0 Y0 F2\nX10 F3\nY10 F4\n"
+            "G40 G1 X-5 Y-5 F1\nG94\nM2\n")
+    lines = _translated(text, "isg").splitlines()
+    first_feed = next(n for n, line in enumerate(lines) if line.startswith("G01"))
+    assert [line for line in lines[:first_feed + 1] if "G94" in line] == ["G94"], lines
+    assert lines[first_feed] == "G01 X-1.414214 Y1.414214 F14.142136", lines

@@ -125,3 +125,29 @@ def test_a_computed_coordinate_under_an_offset_is_a_located_error() -> None:
         to("fanuc", text)
     error = info.value.errors[0]
     assert error.location is not None and "across the spindle" in str(error)
+
+
+
+INCREMENTS_BEFORE_THE_FIRST_ENTRY = "G21 G17 G91\nG10 L1 P3 X1 Y2 Z10\nT3 M6\nG43 H3\nG0 X5 Y6\nG90 G0 X5 Y6\nM2\n"
+INCHES_BEFORE_THE_FIRST_ENTRY = "G20 G90 G17\nG10 L1 P3 X0.1 Y0.05 Z0.5\nT3 M6\nG43 H3\nG0 X1 Y1 Z1\nG21\nG0 X10 Y10 Z10\nM2\n"
+"""The units and the distance mode set before a program's first entry are in force at it and after it (the step once
+followed them only from its first entry on: the increments got the offset, the entry's inches were taken for mm)."""
+
+
+@needs_rs274
+def test_increments_set_before_the_first_entry_move_as_rs274_runs_them() -> None:
+    text = INCREMENTS_BEFORE_THE_FIRST_ENTRY  # (Fanuc refuses a G10 under G91: grbl)
+    theirs = machine_points(rs274.run_rs274(text, tool_table=TOOL_TABLE), 1.0)
+    ours = controlled(to("grbl", text), "grbl")
+    assert len(ours) == len(theirs)
+    for a, b in zip(ours, theirs):
+        assert max(abs(p - q) for p, q in zip(a, b)) <= TOLERANCE_MM, (a, b)
+
+
+def test_an_entry_in_inches_keeps_its_size_after_g21_hand_derived() -> None:
+    # entry 3: X0.1 Y0.05 (inches: 2.54 mm, 1.27 mm); after G21, X10 Y10 is X12.54 Y11.27
+    out = to("fanuc", INCHES_BEFORE_THE_FIRST_ENTRY)
+    assert out.splitlines()[-2:] == ["G00 X12.54 Y11.27 Z10.", "M02"], out
+    report = verify_lines(_lines(INCHES_BEFORE_THE_FIRST_ENTRY), _lines(out), file_in="t.ngc", file_out="t.nc",
+                          source="linuxcnc", target="fanuc", setup=SETUP)
+    assert report.ok, report.summary()

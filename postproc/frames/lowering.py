@@ -45,13 +45,14 @@ from ..dialect import Dialect
 from ..compensation.tool_length import ToolLength
 from ..errors import PostprocError, ProgramError
 from ..interp.control import ASSIGN, CONTROL
-from ..ir.expr import Binary, Expr, Num
+from ..ir.expr import Expr
 from ..ir import Block, CompoundMotion, CutterCompensation, Motion, Section
 from ..ir.keys import watches_none
 from ..lowering.lower import BlockStep, LoweringStep, run_blocks, still_moving
 from ..lowering.move_words import move_words, moving
 from ..ir.state import MM_PER_INCH, ModalState, changes_nothing
 from .affine import EXACT, INDEX, XYZ
+from .carried_arc import carried_arc, combination as _combination
 from .frame import PLANE_AXES, Frame, Position
 from .run_order import RunOrder
 from .run_state import RUN_KEY, FrameRun
@@ -60,7 +61,6 @@ from .offset_changes import current_point_reads, data_setting
 from .commands import command, pending
 from .words import COMPUTED, LAYERED_FORBIDDEN, LINEAR, SWAPPED, SYMBOLIC, note as _note
 
-_TURNED: Final = {"cw": "ccw", "ccw": "cw"}
 
 
 EVALUATE_KEY: Final = "frames.evaluate"
@@ -508,24 +508,11 @@ class FrameEvaluator(BlockStep):
     def arc(self, m: Motion, out: dict[str, float | Expr], mode: str) -> Motion:
         frame = self.frame
         assert frame is not None
-        plane = PLANE_AXES[self.modal.plane]
-        found = frame.map.arc_factor(plane)
-        if found is None:
+        arc = carried_arc(frame.map, self.modal.plane, m, out, mode)
+        if arc is None:
             raise ProgramError(f"an arc in the {self.modal.plane} plane under this frame is not an arc (unequal "
                                "scaling, or a rotation out of its plane): it cannot be evaluated")
-        factor, turned = found
-        centre: dict[str, float | Expr] | None = None
-        radius: float | Expr | None = None
-        if m.center is not None:
-            fm = frame.map.m
-            centre = {}
-            for a in plane[:2]:
-                i = INDEX[a]
-                centre[a] = _combination([(fm[3 * i + INDEX[b]], value) for b, value in m.center.items()
-                                          if abs(fm[3 * i + INDEX[b]]) > EXACT], 0.0)
-        elif m.radius is not None:
-            radius = _combination([(factor, m.radius)], 0.0)
-        return Motion(_TURNED[mode] if turned else mode, out, centre, radius)
+        return arc
 
 
 _WATCHED: Final = frozenset(("Units", "Plane", "DistanceMode", "WorkOffset", "DataSetting", "FrameChange", ASSIGN,
@@ -543,22 +530,6 @@ along the spindle's oriented stop, fixed to the machine (Fanuc parameter 5101) [
 def _computed(m: Motion) -> bool:
     return any(isinstance(v, Expr) for v in m.axes.values()) or isinstance(m.radius, Expr) or (
         m.center is not None and any(isinstance(v, Expr) for v in m.center.values()))
-
-
-def _combination(terms: list[tuple[float, float | Expr]], constant: float) -> float | Expr:
-    """``sum(c * x) + constant``: a number when every ``x`` is one, else the expression (a factor of 1 and
-    a zero constant left out, so an unturned word stays as written)."""
-    total = constant
-    expr: Expr | None = None
-    for c, x in terms:
-        if not isinstance(x, Expr):
-            total += c * x
-            continue
-        term: Expr = x if c == 1.0 else Binary("mul", Num(c), x)
-        expr = term if expr is None else Binary("add", expr, term)
-    if expr is None:
-        return total
-    return expr if total == 0.0 else Binary("add", expr, Num(total))
 
 
 def _cos_sin(degrees: float) -> tuple[float, float]:

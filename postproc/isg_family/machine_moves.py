@@ -31,7 +31,7 @@ from ..dialect import Dialect
 from ..ir import Block, DistanceMode, MachineCoordinates, Motion
 from ..lowering.lower import BlockStep, LoweringStep
 from ..output.home_position import home_position
-from ..ir.state import ModalState
+from ..lowering.units_and_distance import UnitsAndDistance
 
 REFERENCE: Final = frozenset(("home", "home2"))
 QUIET: Final = frozenset(("Comments", "Sequence"))
@@ -58,26 +58,21 @@ class _AbsoluteMachineMoves(BlockStep):
     def __init__(self, ctx: Context) -> None:
         super().__init__()
         self.ctx = ctx
-        start = ModalState()
-        self.distance = start.distance
-        self.inch = start.units == "inch"
+        self.modes = UnitsAndDistance()
+        """What the program reads (not the ``G90`` this step adds)."""
         self.absolute_there = False
         """The target runs absolute where the program is incremental (a ``G91`` is owed)."""
-        self.moves = self.distance == "incremental"
+        self.moves = not self.modes.absolute
 
     def take(self, block: Block) -> list[Block] | None:
         s = block.sections
-        units = s.get("Units")
-        if units is not None:
-            self.inch = getattr(units, "system", "mm") == "inch"
+        modes = self.modes
+        modes.follow(s)
         own = s.get("DistanceMode")
-        if own is not None:
-            self.distance = getattr(own, "mode", self.distance)
         m = s.get("Motion")
         machine = isinstance(m, Motion) and "BlockDelete" not in s and (
             "MachineCoordinates" in s or m.mode in REFERENCE)
-        if machine and self.distance == "incremental" and isinstance(m, Motion) and _settled(block, m, self.ctx,
-                                                                                               self.inch):
+        if machine and not modes.absolute and isinstance(m, Motion) and _settled(block, m, self.ctx, modes.inch):
             if not self.absolute_there:
                 block.add(DistanceMode("absolute"))  # (replaces the block's own G91: restored after)
                 self.absolute_there = True
@@ -89,7 +84,7 @@ class _AbsoluteMachineMoves(BlockStep):
             if own is None:
                 block.add(DistanceMode("incremental"))
                 block.changed()
-        self.moves = self.absolute_there or self.distance == "incremental"
+        self.moves = self.absolute_there or not modes.absolute
         return None
 
 

@@ -46,14 +46,14 @@ from ..dialect import Dialect
 from ..interp.control import CONTROL
 from ..errors import Location, PostprocError, UnsupportedError
 from ..ir.expr import Expr
-from ..ir import Block, CutterCompensation, DataSetting, DistanceMode, Motion, ToolLengthOffset, Units
+from ..ir import Block, CutterCompensation, DataSetting, Motion, ToolLengthOffset
 from ..ir.keys import watches_none
 from ..lowering.lower import BlockStep, LoweringStep
+from ..lowering.units_and_distance import UnitsAndDistance
 
 SELECTED_KEY: Final = "isg_family.tool_data"
 """``ModalState.extra`` key of the D selected while reading (an int or an expression)."""
 _WATCHED: Final = frozenset(("ToolLengthOffset", "CutterCompensation", "DataSetting", "Units", "DistanceMode"))
-MM_PER_INCH: Final = 25.4
 SAME_MM: Final = 1e-9
 
 
@@ -95,13 +95,15 @@ def expects_register(values: dict[str, Any], ctx: Context, first: int) -> None:
 class ResolveRadiusWhereDCannot(LoweringStep):
     """Lowering step for a target whose D brings its length (ISG always; Fagor while ``G43`` is on,
     ``LENGTH_TOGGLES``): a G41/G42 whose register has another length than the one in force becomes the
-    compensated path (see the module docstring)."""
+    compensated path (see the module docstring). It runs after the tool length timing, which decides that length,
+    and it is the translation's one resolver: it resolves G41.1/G42.1 too, the generic step handing over to it
+    (``postproc.lowering.cutter_compensation.TARGET_RESOLVES``)."""
 
     def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
         if ctx.dialect == target.NAME:
             return None
         from ..lowering.cutter_compensation import resolution_unless
-        return resolution_unless(ctx, _d_keeps_the_length_on if target.LENGTH_TOGGLES else _d_keeps_the_length)
+        return resolution_unless(ctx, target, _d_keeps_the_length_on if target.LENGTH_TOGGLES else _d_keeps_the_length)
 
 
 resolve_radius_where_d_cannot = ResolveRadiusWhereDCannot()
@@ -140,8 +142,6 @@ class _Selection:
     """The D the output has selected (None: none written yet)."""
     applied: float = 0.0
     """The length (mm) the output applies."""
-    absolute: bool = True
-    """The distance mode in force (ISG applies a new length at an absolute Z only)."""
     pending: bool = False
     """A length changed without a Z move, waiting for the next Z move (which must be absolute: Fagor)."""
     unapplied: Location | None = None
@@ -181,7 +181,8 @@ class _Select(BlockStep):
         self.later_z = later_z
         self.table = ToolTable(ctx.setup)
         self.state = _Selection()
-        self.inch = False
+        self.modes = UnitsAndDistance()
+        """The distance mode in force (ISG applies a new length at an absolute Z only), and the units."""
 
     def take(self, block: Block) -> list[Block] | None:
         made = self._take(block)
@@ -190,40 +191,31 @@ class _Select(BlockStep):
         return made
 
     def _take(self, block: Block) -> list[Block] | None:
-        ctx, state, toggles, later_z = self.ctx, self.state, self.toggles, self.later_z
+        ctx, state, toggles, later_z, modes = self.ctx, self.state, self.toggles, self.later_z, self.modes
         sections = block.sections
         if state.unapplied is not None and _moves(block):
-            distance = sections.get("DistanceMode")
-            absolute = distance.mode == "absolute" if isinstance(distance, DistanceMode) else state.absolute
             motion = sections.get("Motion")
-            if not (_moves_z(block, absolute or toggles) and isinstance(motion, Motion)
+            if not (_moves_z(block, modes.absolute_in(sections) or toggles) and isinstance(motion, Motion)
                     and motion.mode not in ("home", "home2")):
                 ctx.diagnostics.error(UnsupportedError(UNAPPLIED).located(state.unapplied))
             state.unapplied = None
         if state.pending and _z_move(block):
             state.pending = False
-            distance = sections.get("DistanceMode")
-            absolute = distance.mode == "absolute" if isinstance(distance, DistanceMode) else state.absolute
-            if later_z and not absolute and "MachineCoordinates" not in sections:
+            if later_z and not modes.absolute_in(sections) and "MachineCoordinates" not in sections:
                 ctx.diagnostics.error(UnsupportedError(
                     "the tool length changed before is applied by this incremental Z move on the target (when "
                     "the axis moves [?]), on the source's controller only at the next absolute Z: program Z "
                     "absolutely here", ctx.at(block, ctx.column_of(block, "Z"))))
         if watches_none(sections, _WATCHED):
             return None
-        units = sections.get("Units")
-        if isinstance(units, Units):
-            self.inch = units.system == "inch"
-        distance = sections.get("DistanceMode")
-        if isinstance(distance, DistanceMode):
-            state.absolute = distance.mode == "absolute"
+        modes.follow(sections)
         setting = sections.get("DataSetting")
         if isinstance(setting, DataSetting):
-            self.table.write(setting, MM_PER_INCH if self.inch else 1.0)
+            self.table.write(setting, modes.scale)
         if "ToolLengthOffset" in sections or "CutterCompensation" in sections:
             at = ctx.at(block, ctx.column_of(block, "H" if "ToolLengthOffset" in sections else "D"))
             try:
-                if _rewrite(block, self.table, state, toggles, later_z is not None):
+                if _rewrite(block, self.table, state, modes.absolute, toggles, later_z is not None):
                     state.unapplied = at
             except PostprocError as err:
                 ctx.diagnostics.error(err.located(at))
@@ -237,7 +229,7 @@ def _register(value: int | Expr | None, what: str) -> int | None:
     raise UnsupportedError(f"a {what} register that is computed (the D selecting it is chosen from its value)")
 
 
-def _rewrite(block: Block, table: ToolTable, state: _Selection, toggles: bool, later_z: bool) -> bool:
+def _rewrite(block: Block, table: ToolTable, state: _Selection, absolute: bool, toggles: bool, later_z: bool) -> bool:
     """The block's length and radius registers as the D (and, with ``toggles``, G43/G44) they need. True: the
     new length is left for a later move, which must move Z absolutely (``_Selection.unapplied``)."""
     sections = block.sections
@@ -274,7 +266,7 @@ def _rewrite(block: Block, table: ToolTable, state: _Selection, toggles: bool, l
                    else "zero the program runs with (no length offset)")
                 + f": give register {want} that length in the set-up's <Tools>, or use one register for both")
     unapplied = False
-    if abs(wanted_mm - state.applied) > SAME_MM and not _moves_z(block, state.absolute or toggles):
+    if abs(wanted_mm - state.applied) > SAME_MM and not _moves_z(block, absolute or toggles):
         if later_z:
             state.pending = True  # both apply it at the next (absolute) Z: checked there
         else:

@@ -77,15 +77,15 @@ class CompensatedMoves(ProgrammedPoint):
         seg = Segment(kind, {"line": block.line}, end, self.pos.get(normal) or 0.0)
         seg.fields["source"] = id(seg)
         start = (start_1, start_2)
-        self.held[id(seg)] = (block, not self.absolute)
+        self.held[id(seg)] = (block, not self.modes.absolute)
         if kind in ("cw", "ccw"):
-            offsets = {a: v * self.scale for a, v in (motion.center or {}).items() if isinstance(v, (int, float))}
+            offsets = {a: v * self.modes.scale for a, v in (motion.center or {}).items() if isinstance(v, (int, float))}
             if isinstance(motion.radius, Expr) or any(isinstance(v, Expr) for v in (motion.center or {}).values()):
                 raise Unresolvable("a computed arc under cutter compensation cannot be resolved")
-            radius = None if motion.radius is None else motion.radius * self.scale
+            radius = None if motion.radius is None else motion.radius * self.modes.scale
             try:
                 c = arc_centre(start, (end_1, end_2), (a1, a2), radius, offsets, kind == "cw",
-                               self.ctx.arc_end, self.scale != 1.0, self.scale)
+                               self.ctx.arc_end, self.modes.scale != 1.0, self.modes.scale)
             except ArcError as err:
                 raise UnknownHere(err.message) from None
             if c is None:
@@ -142,7 +142,7 @@ class CompensatedMoves(ProgrammedPoint):
                 raise Unresolvable(f"{needs}, which needs the work offset: {why or 'the program sets it'} (or "
                                    "program a move in work coordinates after the cancel first)")
             assert programmed is not None
-            axes[axis] = _noise_free((programmed + offset) / self.scale)
+            axes[axis] = _noise_free((programmed + offset) / self.modes.scale)
         order = sorted(axes, key=lambda a: "XYZABCUVW".find(a) % 10)
         block.sections["Motion"] = Motion(motion.mode, {a: axes[a] for a in order}, None, None)
         block.changed()
@@ -161,7 +161,7 @@ class CompensatedMoves(ProgrammedPoint):
             raise UnknownHere("the start point of a compensated inverse-time move is not known (program X, Y and "
                                "Z absolutely first)")
         length = move_length(start, end, self.plane, "linear" if kind == "feed" else kind, centre)
-        block.sections["Feed"] = Feed(feed.value * length / self.scale)
+        block.sections["Feed"] = Feed(feed.value * length / self.modes.scale)
         if not self.per_minute or "FeedMode" in block.sections:  # the first of the stretch, or its own G93
             block.sections["FeedMode"] = FeedMode("per_min")
         block.changed()
@@ -200,7 +200,7 @@ class CompensatedMoves(ProgrammedPoint):
     def _rewrite(self, block: Block, seg: Segment, incremental: bool) -> None:
         """The block's move as the compensated one, in absolute program units."""
         sections = block.sections
-        scale = self.scale
+        scale = self.modes.scale
         a1, a2, normal = self.cutter.axes
         xy = seg.xy if seg.xy is not None else (seg.end[a1], seg.end[a2])
         old = sections.get("Motion")

@@ -30,8 +30,8 @@ from ..interp.control import LABEL
 from .move_words import X as _X, Y as _Y, Z as _Z, NotedPoint, move_words
 from .point_after import RETURNS, compound_end, cycle_end, loses_after, unknown_axes
 from .rule_trial import RuleTrial
+from .units_and_distance import UnitsAndDistance
 
-MM_PER_INCH = 25.4
 MOVES: Final = frozenset(("rapid", "linear", "cw", "ccw"))
 KEPT: Final = 16
 """Plain moves ``ProgrammedPoint._note`` keeps before it reads them (``_fold``): memory stays flat whatever the
@@ -72,9 +72,8 @@ class ProgrammedPoint:
         """The tool length register in force (None: no length offset)."""
         self.cutter = cutter_for(rules, release)
         self.table = ToolTable(ctx.setup)
-        self.scale = 1.0
-        """mm per program unit."""
-        self.absolute = True
+        self.modes = UnitsAndDistance()
+        """The units (``scale``: mm per program unit) and the distance mode in force."""
         self.plane = "ZX" if ctx.lathe else "XY"
         self.work_offset = 1
         self.shifted = False
@@ -145,7 +144,7 @@ class ProgrammedPoint:
         moves are read from the last back, until each of X, Y and Z is found. The scale and the distance mode are the kept moves' own: anything that
         changes them settles first."""
         kept = self.kept
-        scale = self.scale
+        scale = self.modes.scale
         left = _X | _Y | _Z
         at = len(kept)
         while left and at > 0:
@@ -191,7 +190,7 @@ class ProgrammedPoint:
         passing = self.passing
         bits = passing.noted
         passing.noted = 0
-        scale = self.scale
+        scale = self.modes.scale
         self.noted |= bits
         self.unknown &= ~bits
         if bits & _X:
@@ -233,7 +232,7 @@ class ProgrammedPoint:
         point is the zero of a frame of its own (``floating``)."""
         if not self._idle():
             return
-        if not self.absolute:
+        if not self.modes.absolute:
             for axis, value in self.pos.items():
                 if value is None:
                     self.pos[axis] = 0.0
@@ -251,8 +250,8 @@ class ProgrammedPoint:
                 raise Unresolvable("a computed position under cutter compensation cannot be resolved")
             if axis not in target:
                 raise Unresolvable(f"motion of axis {axis} with cutter compensation on cannot be resolved")
-            scale = self.scale * 0.5 if axis == "X" and self.diameters else self.scale
-            if self.absolute:
+            scale = self.modes.scale * 0.5 if axis == "X" and self.diameters else self.modes.scale
+            if self.modes.absolute:
                 if axis in self.floating:
                     if not self._idle():
                         raise UnknownHere(f"an absolute {axis} in a compensated stretch of a program that moved by "
@@ -323,7 +322,7 @@ class ProgrammedPoint:
         """Axes brought to absolute numbers in program units (None: not known) by a block run with no
         compensation on (an expanded or native cycle); an axis not followed here is left alone."""
         pos = self.pos
-        scale = self.scale
+        scale = self.modes.scale
         x_scale = scale * 0.5 if self.diameters else scale
         floating = self.floating
         for axis, value in end.items():

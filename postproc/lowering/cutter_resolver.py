@@ -14,8 +14,8 @@ from ..context import Context
 from ..interp.control import ASSIGN, CONTROL, LABEL
 from ..errors import PostprocError, ProgramError, UnsupportedError
 from ..ir.expr import Expr
-from ..ir import (Block, CompoundMotion, CutterCompensation, DataSetting, DistanceMode, Feed, FeedMode, Motion, Plane,
-                  ProgramControl, Section, ToolChange, ToolLengthOffset, ToolSelect, Units, WorkOffset)
+from ..ir import (Block, CompoundMotion, CutterCompensation, DataSetting, Feed, FeedMode, Motion, Plane, ProgramControl,
+                  Section, ToolChange, ToolLengthOffset, ToolSelect, WorkOffset)
 from ..ir.keys import only_move
 from ..compensation.cutter_radius import CutterRadius, Suspended
 from ..compensation.cycle_entry import finishing_entry
@@ -24,7 +24,7 @@ from ..compensation.nose import TIPS, mirrored
 from ..compensation.rules import CutterRules
 from ..ir.state import PLANE_AXES
 from .cutter_moves import CompensatedMoves
-from .cutter_point import MM_PER_INCH, MOVES, Unresolvable, UnknownHere
+from .cutter_point import MOVES, Unresolvable, UnknownHere
 from .point_after import FOLLOWED
 from .rule_trial import STAND_IN_RADIUS, STRETCH_LIMIT, RuleTrial
 from .lower import BlockStep, run_blocks, still_moving
@@ -169,7 +169,7 @@ class Resolver(CompensatedMoves):
                 self.cutter.axes = PLANE_AXES[self.plane]
                 self._entry_start()
             tip = TIPS[mirrored(dynamic.orientation or 0)] if self._nose() else (0, 0)
-            self.cutter.start(dynamic.mode, dynamic.radius(self.scale), self.plane,  # negative: the other side
+            self.cutter.start(dynamic.mode, dynamic.radius(self.modes.scale), self.plane,  # negative: the other side
                               (float(tip[0]), float(tip[1])))
         elif isinstance(cc, CutterCompensation) and cc.mode == "off" and self._idle():
             pass  # a G40 with nothing to cancel: written as it is (grbl has G40)
@@ -264,14 +264,8 @@ class Resolver(CompensatedMoves):
     def _modal(self, sections: dict[str, Section]) -> None:
         if "CoordinateSet" in sections:
             self.shifted = True
-        units = sections.get("Units")
-        if isinstance(units, Units):
-            scale = MM_PER_INCH if units.system == "inch" else 1.0
-            self.scale = scale
-            self.cutter.sweep_slack = 0.001 if units.system == "inch" else 0.0254
-        distance = sections.get("DistanceMode")
-        if isinstance(distance, DistanceMode):
-            self.absolute = distance.mode == "absolute"
+        if self.modes.follow(sections):
+            self.cutter.sweep_slack = 0.001 if self.modes.inch else 0.0254
         plane = sections.get("Plane")
         if isinstance(plane, Plane):
             if plane.plane != self.plane and self.cutter.side is not None:
@@ -285,7 +279,7 @@ class Resolver(CompensatedMoves):
                 self.programmed_offsets.setdefault(setting.index, {}).update(
                     {axis: 0.0 for axis in setting.values})  # (which axes: the values are the frame's now)
             else:
-                self.table.write(setting, self.scale)
+                self.table.write(setting, self.modes.scale)
         offset = sections.get("WorkOffset")
         if isinstance(offset, WorkOffset) and offset.index != self.work_offset:
             self.work_offset = offset.index
@@ -349,7 +343,7 @@ class Resolution(BlockStep):
         by the loop (``ProgrammedPoint.passing``) instead of taken (~900 instructions a block compiled through
         ``take_move``: every grbl and grblHAL translation, callgrind)."""
         r = self.resolver
-        self.point = r.passing if self.idle and self.radii and r.absolute and not r.per_minute else None
+        self.point = r.passing if self.idle and self.radii and r.modes.absolute and not r.per_minute else None
 
     def take(self, block: Block) -> list[Block] | None:
         return self._take(block, False)
@@ -381,7 +375,7 @@ class Resolution(BlockStep):
                         break
         if plain:
             motion = sections.get("Motion")  # the common block: a move, noted for a later entry move
-            if isinstance(motion, Motion) and r.absolute and moving(motion.mode) and self.radii \
+            if isinstance(motion, Motion) and r.modes.absolute and moving(motion.mode) and self.radii \
                     and not (odd and "MachineCoordinates" in sections):
                 r._note(motion)
             elif motion is not None or odd:
@@ -468,7 +462,7 @@ class Checking(BlockStep):
                     break
             if not general:
                 motion = sections.get("Motion")
-                if isinstance(motion, Motion) and r.absolute and moving(motion.mode):
+                if isinstance(motion, Motion) and r.modes.absolute and moving(motion.mode):
                     r._note(motion)
                 elif motion is not None:
                     r._settle()
@@ -501,7 +495,7 @@ class Checking(BlockStep):
         if self.idle and not self.stopped:
             motion = block.sections["Motion"]
             r = self.resolver
-            if isinstance(motion, Motion) and r.absolute and moving(motion.mode):
+            if isinstance(motion, Motion) and r.modes.absolute and moving(motion.mode):
                 r._note(motion)
                 return None
         return still_moving(block, self.take(block))

@@ -62,13 +62,14 @@ from ..context import Context
 from ..dialect import Dialect
 from ..errors import Location, UnsupportedError
 from ..ir.expr import Binary, Expr, Num, Var
-from ..ir import Block, CutterCompensation, DataSetting, DistanceMode, Motion, Section, ToolLengthOffset, Units
+from ..ir import Block, CutterCompensation, DataSetting, DistanceMode, Motion, Section, ToolLengthOffset
 from ..ir.keys import watches_none
 from ..compensation.tool_table import ToolTable
 from .lower import BlockStep, LoweringStep, still_moving
 from .length_point import AXIS, MM_PER_INCH, PLAIN, MachineFrame, follow_point, length_in_force
 from .move_words import Z as Z_BIT, NotedPoint, move_words, moving
 from .point_after import FOLLOWED
+from .units_and_distance import UnitsAndDistance
 
 _WATCHED: Final = frozenset(("ToolLengthOffset", "Motion", "CompoundMotion", "CycleCall", "DistanceMode", "Units",
                              "WorkOffset", "CoordinateSet", "DataSetting", "CutterCompensation", "RigidTap")) | FOLLOWED
@@ -118,11 +119,6 @@ def _absolute_z(block: Block, absolute: bool) -> bool:
             and "MachineCoordinates" not in block.sections)
 
 
-def _distance(block: Block, absolute: bool) -> bool:
-    distance = block.sections.get("DistanceMode")
-    return distance.mode == "absolute" if isinstance(distance, DistanceMode) else absolute
-
-
 @mypyc_attr(allow_interpreted_subclasses=True)
 class _Defer(BlockStep):
     """Towards a target that applies a change at the next move: each change goes to the next absolute Z. A
@@ -135,16 +131,18 @@ class _Defer(BlockStep):
         self.pending: ToolLengthOffset | None = None
         self.written: tuple[str, object, object] = ("cancel", None, None)  # what the target has in force
         self.in_force: tuple[str, object, object] = ("cancel", None, None)  # what the source has programmed
-        self.absolute = True
+        self.modes = UnitsAndDistance()
         self.moves = False
 
     def take(self, block: Block) -> list[Block] | None:
         sections = block.sections
         if self.pending is None and "ToolLengthOffset" not in sections:  # nothing to carry: only the distance mode
             if "DistanceMode" in sections:
-                self.absolute = _distance(block, self.absolute)
+                self.modes.follow(sections)
             return None
-        absolute = self.absolute = _distance(block, self.absolute)
+        modes = self.modes
+        modes.follow(sections)
+        absolute = modes.absolute
         offset = sections.get("ToolLengthOffset")
         if isinstance(offset, ToolLengthOffset):
             same = _key(offset) == self.in_force
@@ -222,8 +220,7 @@ class _Complete(BlockStep):
         axes: tuple[str, ...] = ("X", AXIS) if ctx.lathe else (AXIS,)  # a lathe offset moves X and Z (LinuxCNC's lathe G43 H)
         self.axes = axes
         self.pos: dict[str, float | None] = {a: None for a in axes}  # the programmed point, program units; None: unknown
-        self.inch = False
-        self.absolute = True
+        self.modes = UnitsAndDistance()
         self.in_force: tuple[str, object, object] = ("cancel", None, None)
         self.applied: tuple[str, object, object] = self.in_force  # the length the machine stands with: the last change that met its move
         self.held: list[Block] = []  # the changing block and the blocks after it, while a change waits
@@ -241,7 +238,7 @@ class _Complete(BlockStep):
     def follow(self) -> None:
         """``point`` (``BlockStep.point``) as the run stands: while no change waits, on a mill, in absolute mode,
         with no axis diverged or unplaced, a straight move of X, Y and Z numbers only notes its Z (``_take``)."""
-        self.point = self.notes if (self.pending is None and self.mill and self.absolute and len(self.diverged) == 0
+        self.point = self.notes if (self.pending is None and self.mill and self.modes.absolute and len(self.diverged) == 0
                                     and len(self.unplaced) == 0) else None
 
     def take(self, block: Block) -> list[Block] | None:
@@ -272,7 +269,7 @@ class _Complete(BlockStep):
             if isinstance(motion, Motion):  # (typed: its fields are read natively, not by name)
                 plain = moving(motion.mode)  # (``PLAIN``)
                 words = motion.axes
-                absolute = self.absolute
+                absolute = self.modes.absolute
                 if self.mill and plain and len(self.diverged) == 0 and len(self.unplaced) == 0:
                     read = self.words
                     bits = read.read(motion)  # (its numbers, read once for the steps that follow the point)
@@ -322,13 +319,12 @@ class _Complete(BlockStep):
                 self.pending = None
                 return _release(held, pending[0])
             return []
-        units = sections.get("Units")
-        inch = self.inch
-        if isinstance(units, Units) and (units.system == "inch") != inch:
-            inch = self.inch = units.system == "inch"
+        modes = self.modes
+        if modes.follow(sections):
             for a, v in pos.items():
-                pos[a] = None if v is None else v / MM_PER_INCH if inch else v * MM_PER_INCH
-        absolute = self.absolute = _distance(block, self.absolute)
+                pos[a] = None if v is None else v / MM_PER_INCH if modes.inch else v * MM_PER_INCH
+        inch = modes.inch
+        absolute = modes.absolute
         cutter = sections.get("CutterCompensation")
         if isinstance(cutter, CutterCompensation):
             self.compensating = cutter.mode != "off"

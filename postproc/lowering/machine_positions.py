@@ -31,10 +31,10 @@ from ..context import Context
 from ..dialect import Dialect
 from ..errors import UnsupportedError
 from ..ir.expr import Expr
-from ..ir import Block, DataSetting, DistanceMode, Motion, ToolLengthOffset, ToolSelect, Units, WorkOffset
+from ..ir import Block, DataSetting, Motion, ToolLengthOffset, ToolSelect, WorkOffset
 from ..setup.work_offsets import declared_offsets, offset_beyond_frame
-from ..ir.state import MM_PER_INCH
 from .lower import BlockStep, LoweringStep
+from .units_and_distance import UnitsAndDistance
 
 FRAME_UNKNOWN: Final = frozenset(("CoordinateSet", "FrameChange"))
 """Sections after which the frame holds values only the run knows."""
@@ -71,8 +71,7 @@ class _Resolve(BlockStep):
         self.target = target
         self.declared = declared_offsets(ctx.setup, AXES, ctx.diameter)
         self.table = ToolTable(ctx.setup)
-        self.inch = False
-        self.absolute = True
+        self.modes = UnitsAndDistance()
         self.system = 1  # G54 (or the dialect's first system) at power-on [K: DIALECTS.md, modal defaults]
         self.register: int | str = 0
         """The lathe tool offset register in force (0: none), or why it is not known."""
@@ -87,12 +86,7 @@ class _Resolve(BlockStep):
         s = block.sections
         if WATCHED.isdisjoint(s):
             return None
-        units = s.get("Units")
-        if isinstance(units, Units):
-            self.inch = units.system == "inch"
-        distance = s.get("DistanceMode")
-        if isinstance(distance, DistanceMode):
-            self.absolute = distance.mode != "incremental"
+        self.modes.follow(s)
         work = s.get("WorkOffset")
         if isinstance(work, WorkOffset):
             self.system = work.index
@@ -117,7 +111,7 @@ class _Resolve(BlockStep):
             if setting.table.startswith("work_offset"):
                 self.unknown = "a work offset set in the program"
             else:  # a tool table's entry (written where it is one; another table holds no offset read here)
-                self.table.write(setting, MM_PER_INCH if self.inch else 1.0)
+                self.table.write(setting, self.modes.scale)
         for key in FRAME_UNKNOWN:
             if key in s:
                 self.unknown = "a coordinate setting or a frame change in the program"
@@ -137,7 +131,7 @@ class _Resolve(BlockStep):
         where = self.ctx.at(block)
         lead = (f"the {self.target} dialect has no motion in machine coordinates, and this move cannot be put in "
                 "work coordinates")
-        if not self.absolute:
+        if not self.modes.absolute:
             raise UnsupportedError(f"{lead} under incremental distance", where)
         if self.unknown:
             raise UnsupportedError(f"{lead} after {self.unknown} (its values are the run's)", where)
@@ -152,7 +146,7 @@ class _Resolve(BlockStep):
         shift = self._tool_shift()
         if isinstance(shift, str):
             raise UnsupportedError(f"{lead}: {shift}", where)
-        scale = MM_PER_INCH if self.inch else 1.0
+        scale = self.modes.scale
         axes: dict[str, float | Expr] = {}
         for axis, (value, offset) in beyond.items():
             mm = offset + shift.get(axis, 0.0)  # radius on a diameter lathe's X

@@ -35,9 +35,9 @@ from ..dialect import Dialect
 from ..errors import UnsupportedError
 from ..ir.expr import Expr
 from ..ir import Block, Comments, CompoundMotion, DataSetting, Motion, Section
-from ..ir.state import MM_PER_INCH
 from .synchronised_tap import RigidTap
 from .lower import BlockStep, LoweringStep
+from .units_and_distance import MM_PER_INCH, UnitsAndDistance
 
 _UNREWRITTEN: Final = {"CannedCycle": "a canned cycle kept for the target", "FrameChange": "a frame command",
                        "CoordinateSet": "a coordinate setting", "HolePattern": "a hole pattern",
@@ -71,24 +71,20 @@ class _Sideways(BlockStep):
         self.entries: dict[int, dict[str, float]] = {}
         self.shift: dict[str, float] = {}
         """The offsets in force, mm (empty: none)."""
-        self.inch = False  # a program starts as ``ModalState`` does (and the simulation)
-        self.absolute = True
+        self.modes = UnitsAndDistance()
+        """Followed at every block it takes, entries or not: a G20 or G91 before the first entry is in force there."""
 
     def take(self, block: Block) -> list[Block] | None:
         sections = block.sections
         entries = self.entries
+        modes = self.modes
+        modes.follow(sections)
         if not entries and "DataSetting" not in sections:
             return None  # the common block: no entry with offsets across the spindle yet
-        units = sections.get("Units")
-        if units is not None:
-            self.inch = units.system == "inch"  # type: ignore[attr-defined]
-        distance = sections.get("DistanceMode")
-        if distance is not None:
-            self.absolute = distance.mode != "incremental"  # type: ignore[attr-defined]
         setting = sections.get("DataSetting")
         if isinstance(setting, DataSetting) and setting.table == ENTRY and setting.family != self.family \
                 and self.target.WRITER is not None:
-            _take(block, setting, entries, MM_PER_INCH if self.inch else 1.0)
+            _take(block, setting, entries, modes.scale)
             self.moves = bool(entries)
         length = sections.get("ToolLengthOffset")
         if length is not None:
@@ -98,7 +94,7 @@ class _Sideways(BlockStep):
         shift = self.shift
         if shift:
             try:
-                _offset(block, shift, 1.0 / MM_PER_INCH if self.inch else 1.0, self.absolute)
+                _offset(block, shift, 1.0 / MM_PER_INCH if modes.inch else 1.0, modes.absolute)
             except UnsupportedError as err:
                 ctx = self.ctx
                 ctx.diagnostics.error(err.located(ctx.at(block)))

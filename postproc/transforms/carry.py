@@ -49,6 +49,7 @@ from ..errors import PostprocError, ProgramError
 from ..ir.expr import Expr
 from ..geometry.arcs import centre_from_radius
 from ..frames.affine import EXACT, INDEX, XYZ, Affine
+from ..frames.carried_arc import carried_arc
 from ..frames.frame import PLANE_AXES
 from ..frames.section import FrameChange
 from ..ir import Block, CompoundMotion, CutterCompensation, DataSetting, Motion, Section
@@ -60,7 +61,6 @@ from .words import COMPUTED, COMPUTES, INERT, SYMBOLIC, cycle_roles, named
 
 WHAT: Final = "transformed"
 _MOVES: Final = frozenset(("rapid", "linear", "cw", "ccw", "thread"))
-_TURNED: Final = {"cw": "ccw", "ccw": "cw"}
 _SWAPPED: Final = {"left": "right", "right": "left"}
 _OWN: Final = frozenset(("Units", "Feed", "ToolLengthOffset", "PathControl"))
 """Sections this step leaves alone although they hold lengths (a feed is a speed, a tool length is the
@@ -274,29 +274,13 @@ class ProgramMover:
         return RigidTap(carried.axes, tap.pitch, tap.dwell, tap.speedup)
 
     def arc(self, m: Motion, out: dict[str, float | Expr]) -> Motion:
-        plane = PLANE_AXES[self.modal.plane]
-        found = self.map.arc_factor(plane)
-        if found is None:
+        arc = carried_arc(self.map, self.modal.plane, m, out, str(m.mode))
+        if arc is None:
             raise ProgramError(f"an arc in the {self.modal.plane} plane cannot be {WHAT} by this map: unequal "
                                "scaling, or a rotation out of its plane, makes it no arc")
-        factor, turned = found
-        centre: dict[str, float | Expr] | None = None
-        radius: float | Expr | None = None
-        if m.center is not None:
-            fm = self.map.m
-            vector = [0.0, 0.0, 0.0]
-            for axis, value in m.center.items():
-                if isinstance(value, Expr):
-                    raise ProgramError(COMPUTED.format(what=WHAT))
-                vector[INDEX[axis]] = value
-            turned_vector = self.map.linear(vector)
-            centre = {a: turned_vector[INDEX[a]] for a in plane[:2]}
-            assert all(abs(fm[3 * INDEX[plane[2]] + INDEX[a]]) <= EXACT for a in plane[:2])
-        elif m.radius is not None:
-            if isinstance(m.radius, Expr):
-                raise ProgramError(COMPUTED.format(what=WHAT))
-            radius = m.radius * factor
-        return Motion(_TURNED[str(m.mode)] if turned else m.mode, out, centre, radius)
+        if any(isinstance(value, Expr) for value in (m.center or {}).values()) or isinstance(m.radius, Expr):
+            raise ProgramError(COMPUTED.format(what=WHAT))
+        return arc
 
     def fixed(self, m: Motion) -> Motion:
         """A reference return or a machine-coordinate move: it goes where the machine is, not where the
