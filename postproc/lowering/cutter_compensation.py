@@ -59,7 +59,6 @@ it resolves G41.1/G42.1 as well, and the generic step's run hands over to it (``
 from __future__ import annotations
 
 from mypy_extensions import mypyc_attr
-from typing import Iterator
 
 from ..context import Context
 from ..dialect import RULES_UNKNOWN_KEY, Dialect
@@ -67,7 +66,7 @@ from ..errors import UnsupportedError
 from ..ir import Block, CutterCompensation
 from ..compensation.rules import CutterRules
 from .cutter_resolver import Keeps, Resolution, Resolver, keep_native
-from .lower import BlockStep, LoweringStep, run_blocks
+from .lower import BlockStep, LoweringStep
 
 RESOLVED = "cutter_compensation_resolved"
 """``Context.run_data`` key: the target for which ``resolve_dynamic_cutter_compensation`` resolves every G41/G42
@@ -195,17 +194,11 @@ class HandingOver(Resolution):
         return Resolution.take_move(self, block)
 
 
-def resolve_cutter_compensation_unless(blocks: Iterator[Block], ctx: Context, target: type[Dialect],
-                                       keeps: Keeps) -> Iterator[Block]:
-    """G41/G42 become the compensated path where ``keeps`` says the target cannot write them as they are
-    (and the source's rules are modelled: else the target's own step decides); G41.1/G42.1 always."""
-    run = resolution_unless(ctx, target, keeps)
-    return blocks if run is None else run_blocks(blocks, [run])
-
-
 def resolution_unless(ctx: Context, target: type[Dialect], keeps: Keeps) -> BlockStep | None:
-    """``resolve_cutter_compensation_unless`` as a lowering step's run (None: nothing to resolve): the one resolver of
-    this translation, the generic step's handing over to it (``TARGET_RESOLVES``)."""
+    """G41/G42 become the compensated path where ``keeps`` says the target cannot write them as they are (and the
+    source's rules are modelled: else the target's own step decides), G41.1/G42.1 always; a lowering step's run
+    (None: nothing to resolve), the one resolver of this translation, the generic step's handing over to it
+    (``TARGET_RESOLVES``)."""
     rules: CutterRules | None = ctx.cutter_rules
     if rules is None:
         return None
