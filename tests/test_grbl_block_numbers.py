@@ -63,3 +63,22 @@ def test_a_grbl_source_with_a_block_number_above_the_limit_is_refused_where_it_s
 def test_a_grbl_source_at_the_limit_is_copied_byte_for_byte(source: str) -> None:
     program = "G21 G90\nN10000000 G1 X1. F100.\nM30\n"
     assert _translate(program, source, source) == (program, [])
+
+
+def test_renumbering_past_the_limit_is_refused_at_the_block_it_would_number() -> None:
+    """``--renumber START,STEP`` has no maximum: the block it would number past grbl's limit is a located error,
+    reported once (the numbers before it are valid: N10000000 is the largest)."""
+    from postproc.setup.machine_setup import MachineSetup, OutputSettings
+    program = "G21 G90\nG1 X1. F100.\nX2.\nX3.\nM30\n"
+    setup = MachineSetup(output=OutputSettings(renumber_start=9_999_990, renumber_step=10))
+    out = io.StringIO()
+    diagnostics = Diagnostics(warn_stream=io.StringIO())
+    with pytest.raises(ErrorList) as info:
+        translate(io.StringIO(program), out, file="in.nc", source="grbl", target="grbl", setup=setup,
+                  diagnostics=diagnostics)
+    (error,) = info.value.errors
+    assert str(error).startswith("in.nc:3:1: error: --renumber numbers this block N10000010, above 10000000")
+    setup = MachineSetup(output=OutputSettings(renumber_start=9_999_960, renumber_step=10))
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="in.nc", source="grbl", target="grbl", setup=setup)
+    assert out.getvalue().splitlines()[-1] == "N10000000 M30" and grbl_problems(out.getvalue()) == []
