@@ -29,6 +29,7 @@ from postproc.ir.state import LEFT_START, MM_PER_INCH, MODAL_KEYS, PLANE_AXES
 from postproc.context import Context
 from postproc.syntaxes.syntax import Syntax
 from postproc.syntaxes.power_on_units import KEY as _POWER_ON_UNITS, take_power_on_units
+from postproc.syntaxes.set_up_positions import KEY as _SET_UP_POSITIONS, SetUpPositions
 
 _CONTROL: Final = CONTROL
 _ASSIGN: Final = ASSIGN
@@ -64,7 +65,11 @@ class ModalStateSyntax(Syntax):
                     quiet = False
                     break
         if not quiet:
-            state.apply(sections)  # (which passes a block of constructs only at once)
+            extra = state.extra
+            if extra and _SET_UP_POSITIONS in extra:  # (a translation whose set-up places the tool: rare blocks)
+                cast(SetUpPositions, extra[_SET_UP_POSITIONS]).apply(state, sections, ctx)
+            else:
+                state.apply(sections)  # (which passes a block of constructs only at once)
             if not state.computes and (_CONTROL in sections or _ASSIGN in sections):
                 state.computes = True
         if motion is not None:
@@ -124,7 +129,11 @@ class ModalStateSyntax(Syntax):
         if machine or mode == "home" or mode == "home2":
             for axis in motion.axes:
                 pos[axis] = None
-            state.extra[LEFT_START] = True
+            extra = state.extra
+            positions = extra.get(_SET_UP_POSITIONS)
+            if positions is not None:  # the set-up may place the tool there (``set_up_positions``)
+                cast(SetUpPositions, positions).moved(state, motion, machine, ctx)
+            extra[LEFT_START] = True
             return
         incremental = state.distance == "incremental"
         store = cast("dict[str, object]", pos)
