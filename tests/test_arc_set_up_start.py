@@ -107,3 +107,5 @@ def test_where_the_set_up_does_not_place_it_the_refusal_stays(setup: MachineSetu
 def test_without_a_home_in_the_set_up_the_refusal_stays() -> None:
     errors = PairChecks(MachineSetup()).errors(PLACED["reference return"], "fanuc", "linuxcnc")
     assert len(errors) == 1 and errors[0].startswith("in.nc:4:4: error: the arc ends at an absolute X from a start")
+    assert errors[0].endswith("declare the machine's home and work offsets in the set-up: <Axes><Axis home>, "
+                              "<WorkOffsets>)")

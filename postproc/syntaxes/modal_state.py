@@ -321,10 +321,14 @@ def _refuse_unknown_start(block: Block, ctx: Context, motion: Motion, axis: str,
         ctx.state.position[moved] = None
     del block.sections["Motion"]
     letter = axis if axis in motion.axes else "G"
+    state = ctx.state
+    placeable = " (or, after a reference return, a move in machine coordinates or a change of work system, declare " \
+        "the machine's home and work offsets in the set-up: <Axes><Axis home>, <WorkOffsets>)" \
+        if state.extra.get(LEFT_START) or state.work_offset != 1 else ""
     raise UnsupportedError(f"the arc ends at an absolute {axis} from a start whose {axis} is unknown (not programmed "
                            f"since the program start or since a move or offset change the reading cannot follow): "
                            f"the {target} controller checks the arc from wherever the machine stands and refuses "
-                           f"it almost everywhere; program {axis} before the arc",
+                           f"it almost everywhere; program {axis} before the arc{placeable}",
                            ctx.at(block, ctx.column_of(block, letter)), needs=axis)
     # (needs: after a refused line that programmed the axis, the unknown start is that refusal's consequence)
 

@@ -37,8 +37,9 @@ AXES: Final = ("X", "Y", "Z")
 """The linear axes followed (an arc's plane is two of them)."""
 LENGTH_AXIS: Final = "Z"
 """The axis a tool length offset acts on (a mill's)."""
-PROGRAM_SET: Final = frozenset(("DataSetting", "CoordinateSet", "FrameChange"))
-"""Sections after which the frame holds values only the run knows: nothing more is followed."""
+PROGRAM_SET: Final = frozenset(("CoordinateSet", "FrameChange"))
+"""Sections after which the frame holds values only the run knows: nothing more is followed (and a ``DataSetting``
+of a work offset, ``G10 L2``/``L20``; a tool table's entry changes no work position)."""
 
 
 def install(ctx: Context, setup: MachineSetup) -> None:
@@ -67,7 +68,9 @@ class SetUpPositions:
         """``state.apply(sections)``, with the work position after a change of work system taken from the old one
         and the two systems' offsets where they are declared. A section the program sets the frame with ends the
         following (the key leaves ``state.extra``)."""
-        if ctx.lathe or not PROGRAM_SET.isdisjoint(sections):
+        setting = sections.get("DataSetting")
+        if ctx.lathe or not PROGRAM_SET.isdisjoint(sections) or (
+                setting is not None and str(getattr(setting, "table", "")).startswith("work_offset")):
             del state.extra[KEY]
             state.apply(sections)
             return

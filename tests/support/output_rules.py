@@ -57,7 +57,12 @@ def _linuxcnc(text: str, setup: MachineSetup) -> list[str]:
     declared = sorted(c.number for c in setup.machine_codes if c.letter == "M" and 100 <= int(c.number) <= 199)
     if declared:
         text = re.sub(rf"(?i)\bM0*({'|'.join(declared)})(?![\d.])", "", text)
-    return linuxcnc_problems(machine_state(setup) + text)
+    state = machine_state(setup)
+    if state:  # (after an opening '%': rs274 takes one only as the program's first line)
+        opening = re.match(r"\s*%[^\n]*\n", text)
+        at = opening.end() if opening else 0
+        text = text[:at] + state + text[at:]
+    return linuxcnc_problems(text)
 
 
 def machine_state(setup: MachineSetup) -> str:
