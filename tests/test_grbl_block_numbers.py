@@ -14,7 +14,7 @@ import io
 import pytest
 
 from postproc.api import translate
-from postproc.errors import Diagnostics
+from postproc.errors import Diagnostics, ErrorList
 
 from tests.support.grbl_rules import grbl_problems
 
@@ -43,3 +43,42 @@ def test_a_block_number_above_grbls_limit_is_dropped_with_a_warning(source: str,
 def test_linuxcnc_keeps_a_large_block_number() -> None:
     text, warnings = _translate(PROGRAM, "fanuc", "linuxcnc")
     assert text.splitlines()[1].startswith("N20000000 G1 ") and warnings == []
+
+
+@pytest.mark.parametrize("source", ["grbl", "grblhal"])
+@pytest.mark.parametrize("target", ["grbl", "grblhal", "linuxcnc"])
+def test_a_grbl_source_with_a_block_number_above_the_limit_is_refused_where_it_stands(source: str, target: str) -> None:
+    """grbl's ``gc_execute_line`` refuses the whole line (error 27) before running any of it: the source is invalid
+    on its own controller, so the copy cannot be byte for byte and valid; the reader says so, located."""
+    program = "G21 G90\nN10000000 G1 X1. F100.\n  N10000001 X2.\nM30\n"
+    assert grbl_problems(program) == ["3: error:27 (invalid line number):   N10000001 X2."]  # the checker agrees
+    with pytest.raises(ErrorList) as info:
+        _translate(program, source, target)
+    (error,) = info.value.errors
+    assert str(error).startswith("in.nc:3:3: error: block number N10000001 is above 10000000, the largest the ")
+    assert "it refuses the line" in str(error)
+
+
+@pytest.mark.parametrize("source", ["grbl", "grblhal"])
+def test_a_grbl_source_at_the_limit_is_copied_byte_for_byte(source: str) -> None:
+    program = "G21 G90\nN10000000 G1 X1. F100.\nM30\n"
+    assert _translate(program, source, source) == (program, [])
+
+
+def test_renumbering_past_the_limit_is_refused_at_the_block_it_would_number() -> None:
+    """``--renumber START,STEP`` has no maximum: the block it would number past grbl's limit is a located error,
+    reported once (the numbers before it are valid: N10000000 is the largest)."""
+    from postproc.setup.machine_setup import MachineSetup, OutputSettings
+    program = "G21 G90\nG1 X1. F100.\nX2.\nX3.\nM30\n"
+    setup = MachineSetup(output=OutputSettings(renumber_start=9_999_990, renumber_step=10))
+    out = io.StringIO()
+    diagnostics = Diagnostics(warn_stream=io.StringIO())
+    with pytest.raises(ErrorList) as info:
+        translate(io.StringIO(program), out, file="in.nc", source="grbl", target="grbl", setup=setup,
+                  diagnostics=diagnostics)
+    (error,) = info.value.errors
+    assert str(error).startswith("in.nc:3:1: error: --renumber numbers this block N10000010, above 10000000")
+    setup = MachineSetup(output=OutputSettings(renumber_start=9_999_960, renumber_step=10))
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="in.nc", source="grbl", target="grbl", setup=setup)
+    assert out.getvalue().splitlines()[-1] == "N10000000 M30" and grbl_problems(out.getvalue()) == []

@@ -4,6 +4,7 @@ takes them, each output read back by the target's own reader."""
 from __future__ import annotations
 
 import io
+import re
 from pathlib import Path
 
 import pytest
@@ -93,3 +94,46 @@ def test_defaults_change_nothing_and_stay_off_the_hot_path():
     fanuc = default_registry().dialect("fanuc")
     assert LineFormat.for_run(fanuc.context("p.nc", MachineSetup(), Diagnostics()), "fanuc", False) is None
     assert _write("fanuc") == PROGRAM
+
+
+LIMIT = 10_000_000
+"""grbl 1.1 and grblHAL ``gcode.c``: ``MAX_LINE_NUMBER``, a larger N is error 27 and the line is not run [V]."""
+
+
+@pytest.mark.parametrize("target", ["grbl", "grblhal"])
+@pytest.mark.parametrize("mode", ["all", "tool-changes"])
+def test_numbering_grbl_cannot_take_refuses_the_set_up(target, mode):
+    """``numberMax`` above grbl's limit: the set-up is refused before anything is written (the numbering it states
+    cannot run there), not wrapped elsewhere nor passed for a program too short to reach it."""
+    with pytest.raises(ConfigError, match=f'<Output numberMax="{LIMIT + 1}">: the {target} controller refuses a '
+                                          f'block number above {LIMIT}'):
+        _write(target, block_numbers=mode, renumber_start=10, renumber_step=10, number_max=LIMIT + 1)
+    with pytest.raises(ConfigError, match=f'<Output renumberStart="{LIMIT + 5}">: the {target} controller'):
+        _write(target, block_numbers=mode, renumber_start=LIMIT + 5, number_max=LIMIT)
+
+
+@pytest.mark.parametrize("target", ["grbl", "grblhal"])
+def test_numbering_up_to_grbls_limit_wraps_and_runs(target):
+    from tests.support.grbl_rules import grbl_problems
+    from tests.support.grblhal_rules import grblhal_problems
+    text = _write(target, PROGRAM.replace("/G0", "G0"), block_numbers="all", renumber_start=LIMIT - 20,
+                  renumber_step=10, number_max=LIMIT)  # (grbl has no block delete)
+    numbers = [int(m.group(1)) for line in text.splitlines() if (m := re.match(r"(?:/ )?N(\d+) ", line))]
+    assert numbers[:5] == [LIMIT - 20, LIMIT - 10, LIMIT, LIMIT - 20, LIMIT - 10]
+    assert (grbl_problems if target == "grbl" else grblhal_problems)(text) == []
+
+
+def test_other_targets_keep_a_large_number_max():
+    lines = _write("linuxcnc", block_numbers="all", renumber_start=LIMIT, number_max=LIMIT + 100).splitlines()
+    assert any(line.startswith(f"N{LIMIT + 10} ") for line in lines)
+
+
+def test_the_refusal_is_located_at_the_setting(tmp_path: Path):
+    from postproc.setup.machine_setup import load_setup
+    path = tmp_path / "m.xml"
+    path.write_text('<?xml version="1.0" encoding="UTF-8"?>\n<MachineSetup name="t">\n  <Input/>\n'
+                    '  <Output blockNumbers="all" numberMax="99999999"/>\n</MachineSetup>\n')
+    with pytest.raises(ConfigError) as info:
+        translate(io.StringIO(PROGRAM), io.StringIO(), file="p.nc", source="fanuc", target="grbl",
+                  setup=load_setup(path))
+    assert str(info.value).startswith(f"{path}:4:1: error: <Output numberMax=\"99999999\">: the grbl controller")

@@ -14,6 +14,13 @@ from postproc.setup.machine_setup import MachineSetup
 class GrblFamily(Dialect):
     """A grbl-family dialect (subclassed by each; it registers none itself)."""
 
+    MAX_BLOCK_NUMBER = 10_000_000
+    """[V] grbl 1.1 ``gcode.c``: ``MAX_LINE_NUMBER 10000000``; ``gc_execute_line`` refuses a line whose N is larger
+    with error 27 (invalid line number) before it runs any of it; [V] grblHAL core ``gcode.c``: the same constant and
+    error (``Status_GcodeInvalidLineNumber``). Both read N as a float truncated to an integer, and it only labels
+    status reports. The family's reader refuses such a line (the source is invalid on its own controller), its
+    writer drops such a number from a valid source with a warning, and generated numbering past it is refused."""
+
     LENGTH_AT_PROGRAMMED_AXIS = True
     """[V] grbl ``gcode.c``: ``G43.1``/``G49`` change ``tool_length_offset`` and move nothing; an axis without
     a word keeps ``gc_state.position`` (machine), an absolute word adds the offset, an incremental one adds

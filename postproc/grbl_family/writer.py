@@ -35,10 +35,8 @@ from .dialect import GrblFamily
 class GrblFamilyWriter(WordWriter):
     """What grbl and grblHAL write alike (see the module docstring); each dialect's writer subclasses it."""
 
-    MAX_BLOCK_NUMBER = 10_000_000
-    """[V] grbl 1.1 ``gcode.c``: ``MAX_LINE_NUMBER 10000000``, a larger N is error 27 (invalid line number); [V]
-    grblHAL core ``gcode.c``: the same constant and error (``Status_GcodeInvalidLineNumber``). Both read N as a
-    float truncated to an integer, and it only labels status reports: a larger one is dropped with a warning."""
+    MAX_BLOCK_NUMBER = GrblFamily.MAX_BLOCK_NUMBER
+    """The family's limit (``GrblFamily.MAX_BLOCK_NUMBER``): a larger number of the source is dropped with a warning."""
 
     MACHINE_MOVE_INCREMENTAL_KNOWN: ClassVar[bool] = True
     """G53's words are machine positions under G91 too [V: grbl 1.1 / grblHAL gcode.c]."""

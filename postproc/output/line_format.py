@@ -8,7 +8,11 @@ emits with no step per block. Settings are read once per translation.
   ``renumberStep``), ``tool-changes`` (only the tool-change block, or the first line the tool-change
   template writes), ``none``. A number past ``numberMax`` wraps to ``renumberStart`` (the N address of
   Fanuc 0i and LinuxCNC takes five digits: a sixth is an alarm, so posts wrap; a block number is a
-  label, repeated numbers only matter to jumps). A program that jumps to block numbers cannot be
+  label, repeated numbers only matter to jumps). A target that refuses a number the set-up's numbering
+  can reach (``Writer.MAX_BLOCK_NUMBER``: grbl's 10,000,000) refuses the set-up, located at its setting,
+  before anything is written: ``numberMax`` is the set-up's statement of the largest number its controller
+  takes, so wrapping elsewhere would be a numbering it did not ask for, and a program would fail or pass by
+  its length. A program that jumps to block numbers cannot be
   renumbered: its targets would change (a located error). Comment lines, ``%`` and program-number,
   O-word, ``$`` and label lines get no number.
 * ``case``: ``upper``, or ``lower`` where the target's reader accepts lower case (``LOWER_CASE``);
@@ -64,9 +68,11 @@ class LineRule:
 class LineFormat:
     """One translation's line formatting, wrapped around the writer's ``emit``."""
 
-    def __init__(self, ctx: "Context", target: str | None, lower_case: bool, rule: LineRule | None = None) -> None:
+    def __init__(self, ctx: "Context", target: str | None, lower_case: bool, rule: LineRule | None = None,
+                 max_number: int = 0) -> None:
         """``target``: the dialect written (None: the source's own); ``lower_case``: its reader takes
-        lower-case addresses (the dialect's ``LOWER_CASE``); ``rule``: its ``LINE_RULE``."""
+        lower-case addresses (the dialect's ``LOWER_CASE``); ``rule``: its ``LINE_RULE``; ``max_number``: the
+        largest block number it takes (0: any; ``Writer.MAX_BLOCK_NUMBER``)."""
         out = ctx.setup.output
         self.rule = rule
         self.warned = False
@@ -86,18 +92,24 @@ class LineFormat:
         self.block: Block | None = None
         """The block whose text is being written (None: a template's)."""
         self.template: str | None = None
+        setup = ctx.setup
         if self.case == "lower" and target is not None and not lower_case:
             raise ConfigError(f"<Output case=\"lower\">: the {target} reader takes upper-case addresses only",
-                              Location(ctx.setup.source or "<set-up>", 1, 1))
+                              setup.setting_at("Output", "case"))
+        if max_number and self.mode in ("all", "tool-changes") and max(self.start, self.max) > max_number:
+            name, value = ("renumberStart", self.start) if self.start > max_number else ("numberMax", self.max)
+            raise ConfigError(f"<Output {name}=\"{value}\">: the {target or 'target'} controller refuses a block "
+                              f"number above {max_number} (the line is not run): set {name} to {max_number} or less",
+                              setup.setting_at("Output", name))
 
     @classmethod
     def for_run(cls, ctx: "Context", target: str | None, lower_case: bool,
-                rule: LineRule | None = None) -> "LineFormat | None":
+                rule: LineRule | None = None, max_number: int = 0) -> "LineFormat | None":
         out = ctx.setup.output
         if (out.block_numbers == "keep" and out.case == "keep" and out.line_ending == "keep"
                 and not out.max_line_length and rule is None):
             return None
-        return cls(ctx, target, lower_case, rule)
+        return cls(ctx, target, lower_case, rule, max_number)
 
     def wrap(self, emit: Callable[[str], object]) -> Callable[[str], object]:
         """``emit`` of each text as ``line`` has it."""

@@ -8,7 +8,7 @@ compiled with the RS274 word writer that subclasses it (``pyproject.toml`` ``[to
 from __future__ import annotations
 
 import abc
-from typing import Any, Callable, Iterable, Protocol, TextIO, Final
+from typing import Any, Callable, ClassVar, Iterable, Protocol, TextIO, Final
 
 from mypy_extensions import mypyc_attr
 
@@ -91,6 +91,11 @@ class Lane:
 class Writer(abc.ABC):
     """Turns blocks into text. Subclasses implement ``write_block``."""
 
+    MAX_BLOCK_NUMBER: ClassVar[int] = 0
+    """The largest block number the controller takes (0: any). A larger number of the source is dropped with a
+    warning (``SectionWords.sequence_words``); numbering the run makes past it is refused: the set-up's
+    (``LineFormat``) before anything is written, ``--renumber``'s at the block it would number."""
+
     def __init__(self, ctx: Context, source_dialect: str, target: WrittenDialect | None = None) -> None:
         self.ctx = ctx
         self.source_dialect = source_dialect
@@ -140,7 +145,8 @@ class Writer(abc.ABC):
         """``put`` as a native call (a block's text: the bound method's call cost ~250 instructions compiled)."""
         target = self.target
         line_format = LineFormat.for_run(self.ctx, None if target is None else target.NAME,
-                                         target is None or target.LOWER_CASE, getattr(target, "LINE_RULE", None))
+                                         target is None or target.LOWER_CASE, getattr(target, "LINE_RULE", None),
+                                         self.MAX_BLOCK_NUMBER)
         emit = put if line_format is None else line_format.wrap(put)
         """A text formatted (``LineFormat.line``), to the output."""
         passes_below = lane.passes_below if lane is not None and line_format is not None and not line_format.formats \

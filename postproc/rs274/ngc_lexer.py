@@ -57,7 +57,8 @@ _O_WORDS: Final = "O-words (subprograms, loops, conditions) are not supported by
 
 def lex_block(file: str, number: int, text: str, eol: str, dialect: str,
               oword: OwordParser | None = None, calls: Callable[[Block, str], None] | None = None,
-              ignore_slash: Callable[[Location], None] | None = None, polar: bool = False) -> Block:
+              ignore_slash: Callable[[Location], None] | None = None, polar: bool = False,
+              max_number: int = 0) -> Block:
     """Lex one line into a block: words as written (letter case kept), comments, block delete, and
     with ``oword`` (the file's ``OwordParser``) o-words, assignments and expression values.
 
@@ -68,7 +69,8 @@ def lex_block(file: str, number: int, text: str, eol: str, dialect: str,
     wherever it stands, and the block runs; ``ignore_slash`` is told where the first one was.
     With ``polar`` (LinuxCNC), ``@`` (polar radius) and ``^`` (polar angle) are addresses too, read as
     rs274's ``read_atsign``/``read_carat`` read them (a real value); the dialect's pipeline gives them
-    their meaning.
+    their meaning. ``max_number`` (not 0): a larger block number is refused, as the controller refuses
+    its line (``NgcReader.MAX_BLOCK_NUMBER``).
     """
     block = Block(number, text, eol)
     code = text
@@ -102,7 +104,12 @@ def lex_block(file: str, number: int, text: str, eol: str, dialect: str,
             if "." in num or num[0] in "+-":
                 raise ParseError(f"block number N{num} must be a whole number",
                                  Location(file, number, code.upper().find("N") + 1))
-            block.add(Sequence(int(num)))
+            value = int(num)
+            if max_number and value > max_number:
+                raise ParseError(f"block number N{num} is above {max_number}, the largest the {dialect} controller "
+                                 f"reads: it refuses the line (renumber the program)",
+                                 Location(file, number, code.upper().find("N") + 1))
+            block.add(Sequence(value))
     if calls is not None and words and ("M" in code or "m" in code):
         calls(block, code)
     return block
@@ -327,6 +334,10 @@ class NgcReader(Reader):
     has already ended (M2/M30), with this quoted in the error as what the controller says (LinuxCNC's rs274:
     "Bad character '%' used"). Read here, in the family's compiled loop: as a subclass's generator around it,
     the rule cost every line a resumption in Python (~3k instructions)."""
+    MAX_BLOCK_NUMBER: ClassVar[int] = 0
+    """The largest block number the controller reads (0: any); a larger one is a located error, as the controller
+    refuses the whole line (grbl: error 27). A writer to the same controller drops such a number instead
+    (``SectionWords.MAX_BLOCK_NUMBER``): there the source is valid on its own controller, here it is not."""
 
     def parametric(self) -> bool:
         """Whether this reader reads o-words, parameters and expressions: ``PARAMETRIC``, or a choice of the
@@ -348,6 +359,7 @@ class NgcReader(Reader):
         calls = self.read_call if parametric else None
         ignore_slash = None if self.BLOCK_DELETE else self._ignored_slash
         polar = self.POLAR
+        max_number = self.MAX_BLOCK_NUMBER
         refused = self.TAPE_MARK_REFUSED
         opened: bool | None = None  # (``TAPE_MARK_REFUSED``) whether a ``%`` opened the program; None until the
         ended = False  # first line with content; and whether the program has ended (M2/M30)
@@ -356,7 +368,7 @@ class NgcReader(Reader):
             number += 1
             text, eol = split_line(raw)
             try:
-                block = lex_block(file, number, text, eol, dialect, oword, calls, ignore_slash, polar)
+                block = lex_block(file, number, text, eol, dialect, oword, calls, ignore_slash, polar, max_number)
             except PostprocError as err:
                 report(err, text)
                 yield Block(number, text, eol)

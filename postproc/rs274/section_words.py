@@ -47,10 +47,6 @@ class SectionWords(NumberWriter):
     modal-group error): a block that writes a motion code leaves the cancel out, the motion code ends
     the cycle by itself."""
 
-    MAX_BLOCK_NUMBER: ClassVar[int] = 0
-    """The largest block number the controller takes (0: any the source has); a larger one is dropped with a
-    warning (``sequence_words``): a block number is a label, it moves nothing."""
-
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
         super().__init__(ctx, source_dialect, target)
         self.numbers_dropped = False
@@ -99,8 +95,8 @@ class SectionWords(NumberWriter):
         return ["/" if s.level == 1 else f"/{s.level}"]
 
     def sequence_words(self, s: Any, block: Block) -> list[str]:
-        """``N<number>``, or nothing for a number the controller refuses (``MAX_BLOCK_NUMBER``): the block runs
-        the same without its label, where a refused line would stop the program."""
+        """``N<number>``, or nothing for a number the controller refuses (``Writer.MAX_BLOCK_NUMBER``): the block
+        runs the same without its label (a label, it moves nothing), where a refused line would stop the program."""
         limit = self.MAX_BLOCK_NUMBER
         if limit and s.number > limit:
             if not self.numbers_dropped:

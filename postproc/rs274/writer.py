@@ -222,6 +222,11 @@ class WordWriter(MotionWords):
             else:  # a canonical number, or an expression, keeps its text
                 parts.append(up + num)
         if renumber and block.words and "ProgramStart" not in sections:
+            if self.MAX_BLOCK_NUMBER and renumber > self.MAX_BLOCK_NUMBER:
+                self.renumber = 0  # (refused once: the run has failed, the later blocks are not numbered)
+                raise ProgramError(f"--renumber numbers this block N{renumber}, above {self.MAX_BLOCK_NUMBER}, the "
+                                   f"largest the {self.DIALECT} controller takes (it refuses the line): start or step "
+                                   f"lower", self.ctx.at(block))
             parts.insert(1 if skip is not None else 0, f"N{renumber}")
             self.renumber = renumber + self.renumber_step
         if ASSIGN in sections or CONTROL in sections:

@@ -420,6 +420,8 @@ class Merger:
         setup.table_tools = dict(self.table_tools)
         self.check_pockets(setup.tools)
         setup.template_lines = {name: line for name, (_, _, line) in self.templates.items()}
+        setup.setting_locations = {(key[0], key[1]): where(el) for key, el in self.origin.items()
+                                   if len(key) == 2 and key[0] in self.raw}
         setup.template_files = {name: file for name, (_, file, _) in self.templates.items()}
         setup.own = self.own
         return setup

@@ -13,7 +13,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from ..errors import ConfigError, UsageError
+from ..errors import ConfigError, Location, UsageError
 from .record import SetupGroup, setting, values
 from .record import aliases as field_aliases
 from ..xmlio import XFactory, XmlNode, lxml_etree, where
@@ -42,7 +42,7 @@ class MachineSetup(XmlNode):
                  "template_lines", "limits", "library", "controller", "machine_codes", "foreign_codes", "code_calls",
                  "lathe_cycles",
                  "extends", "extra", "travel", "work_offsets", "tools", "tool_table", "table_tools", "template_files",
-                 "own")
+                 "own", "setting_locations")
 
     def __init__(self, name: str = "default", dialect: str | None = None, pipeline: str | None = None,
                  input: InputSettings | None = None, output: OutputSettings | None = None,
@@ -78,6 +78,9 @@ class MachineSetup(XmlNode):
         self.source = source
         self.template_lines: dict[str, int] = {}
         """Line of the set-up file each template starts on (for located template errors)."""
+        self.setting_locations: dict[tuple[str, str], Location] = {}
+        """(element, attribute) -> where the set-up's files last wrote it, e.g. ``("Output", "numberMax")``: a value
+        a run refuses (one the target cannot take) is located there; a setting not written has none."""
         self.template_files: dict[str, str] = {}
         """The file each template comes from, where it is not ``source`` (a base the set-up extends)."""
         self.extends: str | None = None
@@ -98,6 +101,10 @@ class MachineSetup(XmlNode):
         the table's name and only what the elements change)."""
         self.own: Any = None
         """What the set-up's own file wrote (``setup_load.Own``), when it extends a base."""
+
+    def setting_at(self, element: str, attribute: str) -> Location:
+        """Where the set-up wrote ``<element attribute=...>``: its element's line, else the set-up's first line."""
+        return self.setting_locations.get((element, attribute)) or Location(self.source or "<set-up>", 1, 1)
 
     def _key(self) -> tuple[Any, ...]:
         return (self.name, self.dialect, self.pipeline, self.input, self.output, self.cycles,

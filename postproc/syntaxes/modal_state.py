@@ -29,6 +29,7 @@ from postproc.ir.state import LEFT_START, MM_PER_INCH, MODAL_KEYS, PLANE_AXES
 from postproc.context import Context
 from postproc.syntaxes.syntax import Syntax
 from postproc.syntaxes.power_on_units import KEY as _POWER_ON_UNITS, take_power_on_units
+from postproc.syntaxes.set_up_positions import KEY as _SET_UP_POSITIONS, SetUpPositions
 
 _CONTROL: Final = CONTROL
 _ASSIGN: Final = ASSIGN
@@ -64,7 +65,11 @@ class ModalStateSyntax(Syntax):
                     quiet = False
                     break
         if not quiet:
-            state.apply(sections)  # (which passes a block of constructs only at once)
+            extra = state.extra
+            if extra and _SET_UP_POSITIONS in extra:  # (a translation whose set-up places the tool: rare blocks)
+                cast(SetUpPositions, extra[_SET_UP_POSITIONS]).apply(state, sections, ctx)
+            else:
+                state.apply(sections)  # (which passes a block of constructs only at once)
             if not state.computes and (_CONTROL in sections or _ASSIGN in sections):
                 state.computes = True
         if motion is not None:
@@ -124,7 +129,11 @@ class ModalStateSyntax(Syntax):
         if machine or mode == "home" or mode == "home2":
             for axis in motion.axes:
                 pos[axis] = None
-            state.extra[LEFT_START] = True
+            extra = state.extra
+            positions = extra.get(_SET_UP_POSITIONS)
+            if positions is not None:  # the set-up may place the tool there (``set_up_positions``)
+                cast(SetUpPositions, positions).moved(state, motion, machine, ctx)
+            extra[LEFT_START] = True
             return
         incremental = state.distance == "incremental"
         store = cast("dict[str, object]", pos)
@@ -312,10 +321,14 @@ def _refuse_unknown_start(block: Block, ctx: Context, motion: Motion, axis: str,
         ctx.state.position[moved] = None
     del block.sections["Motion"]
     letter = axis if axis in motion.axes else "G"
+    state = ctx.state
+    placeable = " (or, after a reference return, a move in machine coordinates or a change of work system, declare " \
+        "the machine's home and work offsets in the set-up: <Axes><Axis home>, <WorkOffsets>)" \
+        if state.extra.get(LEFT_START) or state.work_offset != 1 else ""
     raise UnsupportedError(f"the arc ends at an absolute {axis} from a start whose {axis} is unknown (not programmed "
                            f"since the program start or since a move or offset change the reading cannot follow): "
                            f"the {target} controller checks the arc from wherever the machine stands and refuses "
-                           f"it almost everywhere; program {axis} before the arc",
+                           f"it almost everywhere; program {axis} before the arc{placeable}",
                            ctx.at(block, ctx.column_of(block, letter)), needs=axis)
     # (needs: after a refused line that programmed the axis, the unknown start is that refusal's consequence)
 

@@ -57,7 +57,28 @@ def _linuxcnc(text: str, setup: MachineSetup) -> list[str]:
     declared = sorted(c.number for c in setup.machine_codes if c.letter == "M" and 100 <= int(c.number) <= 199)
     if declared:
         text = re.sub(rf"(?i)\bM0*({'|'.join(declared)})(?![\d.])", "", text)
+    state = machine_state(setup)
+    if state:  # (after an opening '%': rs274 takes one only as the program's first line)
+        opening = re.match(r"\s*%[^\n]*\n", text)
+        at = opening.end() if opening else 0
+        text = text[:at] + state + text[at:]
     return linuxcnc_problems(text)
+
+
+def machine_state(setup: MachineSetup) -> str:
+    """The machine the set-up describes, as lines rs274 runs before the program: the reference position G28 goes
+    to (``<Axes><Axis home>``, rs274's #5161-#5163, in its machine unit, inches [V: rs274 reads #5161=-100 as
+    -2540 mm]) and the work offsets of G54-G59 (``<WorkOffsets>``, by ``G10 L2``, in mm). Empty without them
+    (rs274's own: every one zero). The translation's reading and the simulator take the tool there
+    (``postproc.syntaxes.set_up_positions``), so the program is run where they say it runs."""
+    mm = setup.machine.mm()
+    lines = [f"#{5161 + 'XYZ'.index(a)}=[{t.home * mm!r}/25.4]" for a, t in sorted(setup.travel.items())
+             if a in "XYZ" and t.home is not None]
+    for number, offset in sorted(setup.work_offsets.items(), key=lambda item: int(item[0])):
+        words = " ".join(f"{a}{v * mm!r}" for a, v in offset.axes().items() if a in "XYZ")
+        if 1 <= int(number) <= 6 and words:
+            lines.append(f"G21 G10 L2 P{number} {words}")
+    return "".join(f"{line}\n" for line in lines)
 
 
 CHECKERS: dict[str, Callable[[str, MachineSetup], list[str]]] = {"grbl": _grbl, "grblhal": _grblhal}
