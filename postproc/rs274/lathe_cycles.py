@@ -27,8 +27,9 @@ from postproc.cycles.lathe_expansion import (expand, finishing_split, nose_shape
 from postproc.cycles.lathe_lowering import NOSE_PROFILE, THREAD_CHAMFER
 from postproc.errors import PostprocError, ProgramError, UnsupportedError
 from postproc.ir.expr import Expr
-from postproc.ir import (Block, CompoundMotion, CutterCompensation, CycleCall, DataSetting, MachineFunction, Motion,
-                         NativeCode, Sequence)
+from postproc.interp.variables import RUN_INTERPRETER_KEY
+from postproc.ir import (Block, CompoundMotion, CutterCompensation, CycleCall, DataSetting, Feed, MachineFunction,
+                         Motion, NativeCode, Sequence)
 from postproc.ir.lathe_sections import InProfile, LatheCycle
 from postproc.syntaxes.syntax import Syntax
 
@@ -124,6 +125,10 @@ class LatheCycleSyntax(Syntax):
         """Expand a cycle that moves (not a first block) and put the tool where it ends; a finishing cycle
         whose profile turns nose compensation off in its last block returns that block's part, to follow."""
         if cycle.form == "first":
+            return None
+        if cycle.kind == "turn_finish" and _copied(ctx) and \
+                (int(cycle.params["ns"]), int(cycle.params["nf"])) in ctx.state.extra.get(KEPT_KEY, ()):
+            _keep_as_written(block, ctx, code, "it finishes a profile that computes")
             return None
         start = start_point(ctx)
         if start is None:
@@ -240,6 +245,14 @@ class LatheCycleSyntax(Syntax):
                     problem = ProgramError(f"{code}: the profile block at line {later.line} programs a cycle",
                                            ctx.at(later))
                     break
+        if problem is None and _copied(ctx) and _computes(profile):
+            _keep_as_written(block, ctx, code, "its profile computes")
+            ctx.state.extra.setdefault(KEPT_KEY, set()).add((ns, nf))
+            for later in profile:
+                later.add(InProfile(block.line))
+            yield block
+            yield from held
+            return
         if problem is None:
             try:
                 start = start_point(ctx)
@@ -270,6 +283,49 @@ class LatheCycleSyntax(Syntax):
             later.add(InProfile(block.line))
         yield block
         yield from held
+
+
+KEPT_KEY = "LatheCycleSyntax.kept"
+"""``ctx.state.extra`` key: the (ns, nf) of the roughing cycles a copy kept as written (``_keep_as_written``), so a
+finishing cycle on the same profile is kept too."""
+KEPT_CYCLE = "kept as written (its moves are known where it runs)"
+"""What the ``NativeCode`` of a kept cycle says, after its reason."""
+
+
+def _copied(ctx: Context) -> bool:
+    """The program goes to its own dialect as written: a copy (``program_mode`` 'keep') in which nothing runs and
+    which is no dry run of a translation elsewhere (``postproc.api._keep_check``, which must find that another
+    target needs the moves), as LinuxCNC's lathe cycles and polar lines decide."""
+    return (ctx.program_mode == "keep" and RUN_INTERPRETER_KEY not in ctx.run_data
+            and not ctx.run_data.get("dry_run"))
+
+
+def _computes(profile: list[Block]) -> bool:
+    """A profile block has a computed move or feed word (``X[#1]``, ``R#2``, ``F#3``): its moves are known only
+    where the program runs, so ``profile_segments`` refuses it."""
+    for block in profile:
+        feed = block.sections.get("Feed")
+        if isinstance(feed, Feed) and isinstance(feed.value, Expr):
+            return True
+        motion = block.sections.get("Motion")
+        if isinstance(motion, Motion) and (any(isinstance(v, Expr) for v in motion.axes.values())
+                                           or isinstance(motion.radius, Expr)
+                                           or any(isinstance(v, Expr) for v in (motion.center or {}).values())):
+            return True
+    return False
+
+
+def _keep_as_written(block: Block, ctx: Context, code: str, why: str) -> None:
+    """A cycle of a copy whose moves are known only where the program runs: its line goes out as written
+    (``NativeCode``, which only its own dialect writes) and its profile blocks with it, as ever; the controller
+    reads the profile when the cycle runs, as it would have in the source [K: Fanuc T G70-G73, the blocks ns..nf
+    read by the cycle; GSK 980TDc alike [?]]. Where the tool ends is not known here: X and Z are unknown after it,
+    and a later step that needs them refuses with its own located error. ``verify`` and ``toolpath`` run the
+    program (``program_mode`` 'execute'), so they read the moves; a translation elsewhere flattens or refuses."""
+    block.sections.pop("LatheCycle", None)
+    block.add(NativeCode(ctx.dialect, f"{code}: {why}, {KEPT_CYCLE}", block.text or ""))
+    ctx.state.position["X"] = None
+    ctx.state.position["Z"] = None
 
 
 def _finishing_profile(segs: list[Seg], key: tuple[int, int], start: tuple[float, float], ctx: Context, code: str,
