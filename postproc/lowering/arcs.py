@@ -171,6 +171,11 @@ class _Arcs(BlockStep):
             motion = block.sections.get("Motion")
             if motion is None or isinstance(motion, Motion) and self.follow_move(motion):
                 return None
+        return self.rewrite(block)
+
+    def rewrite(self, block: Block) -> list[Block] | None:
+        """``take``'s general way (``_Rewriter.block``), for any block."""
+        rewriter = self.rewriter
         rewriter.settle()
         try:
             out = rewriter.block(block)
@@ -197,7 +202,7 @@ class _Arcs(BlockStep):
             motion = block.sections["Motion"]
             if isinstance(motion, Motion) and self.follow_move(motion):
                 return None
-        return self.take(block)
+        return self.rewrite(block)
 
     def follow_move(self, motion: Motion) -> bool:
         """While the position is ``plain``: a move that only moves it to its words, as ``_track`` does, is followed so
