@@ -168,8 +168,7 @@ class _Arcs(BlockStep):
     def take(self, block: Block) -> list[Block] | None:
         rewriter = self.rewriter
         if rewriter.plain and _inert(block.sections):  # (a move with its feed, a comment: ~2% of a CAM program)
-            motion = block.sections.get("Motion")
-            if motion is None or isinstance(motion, Motion) and self.follow_move(motion):
+            if (motion := block.sections.get("Motion")) is None or isinstance(motion, Motion) and self.follow_move(motion):
                 return None
         return self.rewrite(block)
 
@@ -195,9 +194,7 @@ class _Arcs(BlockStep):
         return None if len(out) == 1 and out[0] is block else out
 
     def take_move(self, block: Block) -> list[Block] | None:
-        """``take`` for a block that is only a move: one that only moves the position while it is ``plain``
-        (``follow_move``) goes no further (~2.5k instructions a block compiled through ``take``: every grbl
-        translation)."""
+        """``take`` for a block that is only a move (``follow_move``: ~2.5k instructions a block less compiled)."""
         if self.rewriter.plain:
             motion = block.sections["Motion"]
             if isinstance(motion, Motion) and self.follow_move(motion):
@@ -205,14 +202,12 @@ class _Arcs(BlockStep):
         return self.rewrite(block)
 
     def follow_move(self, motion: Motion) -> bool:
-        """While the position is ``plain``: a move that only moves it to its words, as ``_track`` does, is followed so
-        (True; False: it goes the general way, ``_Rewriter.block``). So is a straight move; an I/J/K arc the pass
-        leaves as it is (``kept_centres``: grbl's and grblHAL's from a Fanuc or LinuxCNC program); and, settling
-        them, an R arc the settle pass judges kept before building it (``_Rewriter.keeps_radius``: ~5k instructions
-        an R arc through ``take``). A move of X, Y and Z numbers is only noted (``_Rewriter.note``: read once for
-        the steps that follow the point, ``move_words``); other words go into the position at once: while nothing
-        read is symbolic (``ModalState.symbolic``: no word of the program so far is an ``Expr``, as
-        ``postproc.frames.lowering`` asks) every word is a number, one ``dict.update`` (~800 instructions compiled)."""
+        """While the position is ``plain``, a move that only moves it to its words (as ``_track``) is followed so (True;
+        False: the general way, ``rewrite``): a straight move, an I/J/K arc the pass leaves (``kept_centres``: grbl's
+        from a Fanuc or LinuxCNC program), an R arc the settle pass keeps unbuilt (``_Rewriter.keeps_radius``: ~5k
+        instructions less). X, Y and Z numbers are only noted (``_Rewriter.note``, ``move_words``); other words go
+        into the position at once: while nothing read is symbolic (``ModalState.symbolic``) every word is a number,
+        one ``dict.update`` (~800 instructions compiled)."""
         rewriter = self.rewriter
         mode = motion.mode
         if mode == "cw" or mode == "ccw":
@@ -240,14 +235,12 @@ class _Arcs(BlockStep):
 
 
 INERT: Final = frozenset(("Sequence", "Motion", "Comments", "Feed", "SpindleSpeed", "SpindleControl", "Coolant"))
-"""The sections of a block the pass has nothing to do with but its move: a block number, comments, and the feed,
-the spindle and the coolant (which change nothing the pass reads of its ``ModalState``: the position, plane,
-units, distance and feed modes, polar coordinates)."""
+"""Sections the pass has nothing to do with but the move: none changes what it reads of its ``ModalState`` (the
+position, plane, units, distance and feed modes, polar coordinates)."""
 
 
 def _inert(sections: dict[str, Section]) -> bool:
-    """Every key of the block is ``INERT``: the block is the pass's only by its move (``_Arcs.follow_move``). (A loop
-    over its few keys: compiled, ``frozenset.issuperset`` is a bound method call.)"""
+    """Every key of the block is ``INERT`` (a loop over its few keys: ``issuperset`` is a bound method call)."""
     for key in sections:
         if key not in INERT:
             return False
@@ -372,10 +365,9 @@ class _Rewriter:
                 self.scaling = False
 
     def _compound(self, block: Block, compound: CompoundMotion) -> None:
-        """An expansion's moves (absolute, program units): its arcs rewritten in place. Moves without an arc (an
-        expanded hole's) only move the position, each axis to its last number: where they end, as
-        ``point_after.compound_end`` found it once for every step that follows the point (kept on the compound),
-        taken at once instead of walking the moves (~1.6k instructions a move compiled, nine moves a hole)."""
+        """An expansion's moves (absolute, program units): its arcs rewritten in place. Without an arc (a hole's) they
+        only move the position to where they end (``point_after.compound_end``, found once for every step that
+        follows the point): not walked (~1.6k instructions a move compiled)."""
         if not self.ctx.increments and not _arcs_in(compound.items):
             end = compound_end(compound)  # (None: a move other than G0-G3 among them, the walk's)
             if end is not None:
@@ -518,12 +510,11 @@ class _Rewriter:
         return motions
 
     def keeps_radius(self, motion: Motion, incremental: bool, machine: bool) -> bool:
-        """The settle pass leaves the R arc as it is without building it: the target needs no care for R
-        (``Dialect.R_ARC_FLOAT_SLACK``), the arc is not judged here (machine coordinates, polar, a computed word),
-        or it is clearly short of half a turn (``_short_of_half_turn``). The position is settled."""
-        slack_share = self.target.R_ARC_FLOAT_SLACK
-        return not slack_share or machine or bool(self.state.extra.get("polar")) or isinstance(motion.radius, Expr) or any(
-            isinstance(v, Expr) for v in motion.axes.values()) or self._short_of_half_turn(motion, incremental, slack_share)
+        """The settle pass leaves the R arc unbuilt: no care for R (``Dialect.R_ARC_FLOAT_SLACK``), not judged here
+        (machine coordinates, polar, a computed word), or clearly short of half a turn (position settled)."""
+        share = self.target.R_ARC_FLOAT_SLACK
+        return not share or machine or bool(self.state.extra.get("polar")) or isinstance(motion.radius, Expr) or any(
+            isinstance(v, Expr) for v in motion.axes.values()) or self._short_of_half_turn(motion, incremental, share)
 
     def _short_of_half_turn(self, motion: Motion, incremental: bool, slack_share: float) -> bool:
         """The R arc is clearly short of half a turn: R off by the slack moves its centre under half of
