@@ -24,7 +24,8 @@ Decisions (docs/cli.md says the same):
 
 Here: what an arc becomes (the passes, their position tracking and the forms' rules); an arc's words as
 numbers and back (absolute or incremental, diameters, increment addresses) are ``arc_words.ArcWords``, the
-plane arithmetic (chords, R pieces, centre errors) ``arc_geometry``.
+plane arithmetic (chords, R pieces, centre errors) ``arc_geometry``. One module of about 620 lines: the forms and
+the settle pass share one position tracking (``_Rewriter``) and the fast follow of a move held to it (``_Arcs``).
 """
 
 from __future__ import annotations
@@ -237,6 +238,11 @@ class _Arcs(BlockStep):
 INERT: Final = frozenset(("Sequence", "Motion", "Comments", "Feed", "SpindleSpeed", "SpindleControl", "Coolant"))
 """Sections the pass has nothing to do with but the move: none changes what it reads of its ``ModalState`` (the
 position, plane, units, distance and feed modes, polar coordinates)."""
+
+
+def _computed(value: object) -> bool:
+    """An ``Expr`` (a float first: cheap compiled, an ``Expr`` test of the interpreted class is not)."""
+    return type(value) is not float and isinstance(value, Expr)
 
 
 def _inert(sections: dict[str, Section]) -> bool:
@@ -513,8 +519,12 @@ class _Rewriter:
         """The settle pass leaves the R arc unbuilt: no care for R (``Dialect.R_ARC_FLOAT_SLACK``), not judged here
         (machine coordinates, polar, a computed word), or clearly short of half a turn (position settled)."""
         share = self.target.R_ARC_FLOAT_SLACK
-        return not share or machine or bool(self.state.extra.get("polar")) or isinstance(motion.radius, Expr) or any(
-            isinstance(v, Expr) for v in motion.axes.values()) or self._short_of_half_turn(motion, incremental, share)
+        if not share or machine or self.state.extra.get("polar") or _computed(motion.radius):
+            return True
+        for value in motion.axes.values():
+            if _computed(value):
+                return True
+        return self._short_of_half_turn(motion, incremental, share)
 
     def _short_of_half_turn(self, motion: Motion, incremental: bool, slack_share: float) -> bool:
         """The R arc is clearly short of half a turn: R off by the slack moves its centre under half of
@@ -527,10 +537,11 @@ class _Rewriter:
         position = self.position
         s1, s2 = position.get(a1), position.get(a2)
         radius = motion.radius
-        if s1 is None or s2 is None or not isinstance(radius, (int, float)):
-            return False
+        if s1 is None or s2 is None or not (type(radius) is float or isinstance(radius, (int, float))):
+            return False  # (a float first: cheap compiled, a test of a tuple of types is not)
         e1, e2 = motion.axes.get(a1, s1), motion.axes.get(a2, s2)
-        if not isinstance(e1, (int, float)) or not isinstance(e2, (int, float)):
+        if not (type(e1) is float or isinstance(e1, (int, float))) or not (
+                type(e2) is float or isinstance(e2, (int, float))):
             return False
         mm = self._mm()
         half = math.hypot(e1 - s1, e2 - s2) * mm / 2.0
