@@ -9,6 +9,7 @@ from hypothesis import given, settings, strategies as st
 from postproc_grbl.text import LINES as GRBL_LINES
 from postproc_linuxcnc.lines import LINES as LINUXCNC_LINES
 
+from postproc.grbl_family.text import short
 from postproc.output.line_format import LineRule
 
 RULES: list[LineRule] = [GRBL_LINES, LINUXCNC_LINES]
@@ -60,3 +61,10 @@ def test_a_short_text_passes_whatever_its_characters() -> None:
     full, over = "\U0001f600" * (limit // 4), "\U0001f600" * (limit // 4 + 1)
     assert LINUXCNC_LINES.fits(full) and kept_as_written(LINUXCNC_LINES, full)
     assert not LINUXCNC_LINES.fits(over) and not kept_as_written(LINUXCNC_LINES, over)
+
+
+@settings(max_examples=300, deadline=None)
+@given(text=st.text(alphabet="G1X.\n\r", max_size=400), size=st.integers(min_value=1, max_value=300))
+def test_the_piece_length_test_is_the_longest_piece_shorter_than_the_buffer(text: str, size: int) -> None:
+    """``short`` (a few searches) says what the longest piece between LFs says, at every length and buffer."""
+    assert short(text, size) == (max(map(len, text.split("\n"))) < size), (text, size)

@@ -128,8 +128,7 @@ arc_moves = st.tuples(st.sampled_from(["linear", "rapid", "cw", "ccw"]), plain_a
 def test_the_arc_pass_takes_a_kept_centre_arc_as_a_straight_move(moves: list[tuple[str, dict[str, float], str]]) -> None:
     """From a source whose controller keeps the programmed centre (Fanuc's), the settle pass follows a plain I/J/K
     arc as a straight move (``_Arcs.kept_centres``): the same position, the block as it was, as through ``take``
-    (an R arc and a centreless one go through ``take`` either way: the example's half circle by R is written by
-    I/J/K, ``settle_arc_ends``)."""
+    (``_Arcs.rewrite``, the general way; the example's half circle by R is written by I/J/K, ``settle_arc_ends``)."""
     fast, slow = _ctx(), _ctx()
     fast_step = _Arcs(fast, ArcOption("settle"), _target())
     slow_step = _Arcs(slow, ArcOption("settle"), _target())
@@ -142,7 +141,7 @@ def test_the_arc_pass_takes_a_kept_centre_arc_as_a_straight_move(moves: list[tup
             block.sections = {"Motion": Motion(mode, dict(given), {"X": 1.5, "Y": -0.5} if arc and centre == "ijk" else None,
                                                25.0 if arc and centre == "r" else None)}
             blocks.append(block)
-        assert fast_step.take_move(blocks[0]) == slow_step.take(blocks[1]) is None
+        assert fast_step.take_move(blocks[0]) == slow_step.rewrite(blocks[1]) is None
         fast_step.rewriter.settle()
         slow_step.rewriter.settle()
         assert fast_step.rewriter.position == slow_step.rewriter.position

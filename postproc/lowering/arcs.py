@@ -24,7 +24,8 @@ Decisions (docs/cli.md says the same):
 
 Here: what an arc becomes (the passes, their position tracking and the forms' rules); an arc's words as
 numbers and back (absolute or incremental, diameters, increment addresses) are ``arc_words.ArcWords``, the
-plane arithmetic (chords, R pieces, centre errors) ``arc_geometry``.
+plane arithmetic (chords, R pieces, centre errors) ``arc_geometry``. One module of about 620 lines: the forms and
+the settle pass share one position tracking (``_Rewriter``) and the fast follow of a move held to it (``_Arcs``).
 """
 
 from __future__ import annotations
@@ -49,7 +50,7 @@ from .lower import BlockStep, LoweringStep, run_blocks
 from .arc_geometry import Arc, chord_points, r_centre_error, r_pieces, signed_radius, split
 from .arc_words import ArcWords
 from .move_words import NotedPoint, move_words
-from .point_after import cycle_end
+from .point_after import compound_end, cycle_end
 
 FORMS: Final = ("lines", "ijk", "r")
 SETTLE: Final = "settle"
@@ -128,6 +129,16 @@ class RewriteArcs(LoweringStep):
         return _Arcs(ctx, self.option, target)
 
 
+def _arcs_in(items: list[Section]) -> bool:
+    """An arc is among an expansion's moves (mode cw or ccw: the only moves ``_Rewriter._arc`` looks at)."""
+    for item in items:
+        if isinstance(item, Motion):
+            mode = item.mode
+            if mode == "cw" or mode == "ccw":
+                return True
+    return False
+
+
 def rewrite_arcs(blocks: Iterator[Block], ctx: Context, option: ArcOption, target: type[Dialect]) -> Iterator[Block]:
     """The program lowered for ``target`` with its arcs rewritten as ``option`` asks (see the module docstring)."""
     return run_blocks(blocks, [_Arcs(ctx, option, target)])
@@ -145,6 +156,8 @@ class _Arcs(BlockStep):
         self.kept_centres = option.form == SETTLE and ctx.arc_end.runs == SPIRAL
         """An I/J/K arc only moves the position, as a straight move does: the settle pass of a source whose controller
         keeps the programmed centre leaves such an arc as it is (``_Rewriter._settle``)."""
+        self.settles = option.form == SETTLE
+        """The settle pass (``settle_arc_ends``): an R arc clearly short of half a turn stays as it is."""
         self.follow()
 
     def follow(self) -> None:
@@ -154,6 +167,14 @@ class _Arcs(BlockStep):
         self.point = rewriter.notes if rewriter.plain else None
 
     def take(self, block: Block) -> list[Block] | None:
+        rewriter = self.rewriter
+        if rewriter.plain and _inert(block.sections):  # (a move with its feed, a comment: ~2% of a CAM program)
+            if (motion := block.sections.get("Motion")) is None or isinstance(motion, Motion) and self.follow_move(motion):
+                return None
+        return self.rewrite(block)
+
+    def rewrite(self, block: Block) -> list[Block] | None:
+        """``take``'s general way (``_Rewriter.block``), for any block."""
         rewriter = self.rewriter
         rewriter.settle()
         try:
@@ -174,31 +195,62 @@ class _Arcs(BlockStep):
         return None if len(out) == 1 and out[0] is block else out
 
     def take_move(self, block: Block) -> list[Block] | None:
-        """``take`` for a block that is only a move: a straight move while the position is ``plain`` moves it to its
-        words, as ``_track`` does (~2.5k instructions a block compiled through ``take``: every grbl translation).
-        A move of X, Y and Z numbers is only noted (``_Rewriter.note``: read once for the steps that follow the
-        point, ``move_words``); other words go into the position at once: while nothing read is symbolic
-        (``ModalState.symbolic``: no word of the program so far is an ``Expr``, as ``postproc.frames.lowering``
-        asks) every word is a number, one ``dict.update`` (~800 instructions compiled). So is an I/J/K arc the pass
-        leaves as it is (``kept_centres``: grbl's and grblHAL's from a Fanuc or LinuxCNC program)."""
-        rewriter = self.rewriter
-        if rewriter.plain:
+        """``take`` for a block that is only a move (``follow_move``: ~2.5k instructions a block less compiled)."""
+        if self.rewriter.plain:
             motion = block.sections["Motion"]
-            if isinstance(motion, Motion):
-                mode = motion.mode
-                if mode == "linear" or mode == "rapid" or self.kept_centres and motion.radius is None and (
-                        mode == "cw" or mode == "ccw"):  # (an arc through ``take``: ~5.4k instructions more)
-                    if rewriter.note(motion):
-                        return None
-                    rewriter.settle()
-                    position = rewriter.position
-                    if not self.ctx.state.symbolic:
-                        position.update(motion.axes)  # type: ignore[arg-type]  # numbers: nothing is symbolic yet
-                        return None
-                    for axis, value in motion.axes.items():  # (a float first: cheap compiled, an Expr test is not)
-                        position[axis] = value if isinstance(value, float) or not isinstance(value, Expr) else None
-                    return None
-        return self.take(block)
+            if isinstance(motion, Motion) and self.follow_move(motion):
+                return None
+        return self.rewrite(block)
+
+    def follow_move(self, motion: Motion) -> bool:
+        """While the position is ``plain``, a move that only moves it to its words (as ``_track``) is followed so (True;
+        False: the general way, ``rewrite``): a straight move, an I/J/K arc the pass leaves (``kept_centres``: grbl's
+        from a Fanuc or LinuxCNC program), an R arc the settle pass keeps unbuilt (``_Rewriter.keeps_radius``: ~5k
+        instructions less). X, Y and Z numbers are only noted (``_Rewriter.note``, ``move_words``); other words go
+        into the position at once: while nothing read is symbolic (``ModalState.symbolic``) every word is a number,
+        one ``dict.update`` (~800 instructions compiled)."""
+        rewriter = self.rewriter
+        mode = motion.mode
+        if mode == "cw" or mode == "ccw":
+            if motion.radius is None:
+                if not self.kept_centres:
+                    return False
+            elif not self.settles:
+                return False
+            else:
+                rewriter.settle()
+                if not rewriter.keeps_radius(motion, False, False):
+                    return False
+        elif mode != "linear" and mode != "rapid":
+            return False
+        if rewriter.note(motion):
+            return True
+        rewriter.settle()
+        position = rewriter.position
+        if not self.ctx.state.symbolic:
+            position.update(motion.axes)  # type: ignore[arg-type]  # numbers: nothing is symbolic yet
+            return True
+        for axis, value in motion.axes.items():  # (a float first: cheap compiled, an Expr test is not)
+            position[axis] = value if isinstance(value, float) or not isinstance(value, Expr) else None
+        return True
+
+
+INERT: Final = frozenset(("Sequence", "Motion", "Comments", "Feed", "SpindleSpeed", "SpindleControl", "Coolant"))
+"""Sections the pass has nothing to do with but the move: none changes what it reads of its ``ModalState`` (the
+position, plane, units, distance and feed modes, polar coordinates)."""
+
+
+def _computed(value: object) -> bool:
+    """An ``Expr`` (a float first: cheap compiled, an ``Expr`` test of the interpreted class is not)."""
+    return type(value) is not float and isinstance(value, Expr)
+
+
+def _inert(sections: dict[str, Section]) -> bool:
+    """Every key of the block is ``INERT`` (a loop over its few keys: ``issuperset`` is a bound method call)."""
+    for key in sections:
+        if key not in INERT:
+            return False
+    return True
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -319,7 +371,14 @@ class _Rewriter:
                 self.scaling = False
 
     def _compound(self, block: Block, compound: CompoundMotion) -> None:
-        """An expansion's moves (absolute, program units): its arcs rewritten in place."""
+        """An expansion's moves (absolute, program units): its arcs rewritten in place. Without an arc (a hole's) they
+        only move the position to where they end (``point_after.compound_end``, found once for every step that
+        follows the point): not walked (~1.6k instructions a move compiled)."""
+        if not self.ctx.increments and not _arcs_in(compound.items):
+            end = compound_end(compound)  # (None: a move other than G0-G3 among them, the walk's)
+            if end is not None:
+                self.position.update(end)
+                return
         items: list[Section] = []
         changed = False
         for item in compound.items:
@@ -436,9 +495,7 @@ class _Rewriter:
         """An R arc for a target that refuses any chord over 2R (``Dialect.R_ARC_FLOAT_SLACK``): by I/J/K
         where R rounded by the writer and by the target's floating point moves the centre more than
         ``R_FORM_TOLERANCE_MM`` (an arc within reach of 180 degrees); else left as it is."""
-        slack_share = self.target.R_ARC_FLOAT_SLACK
-        if not slack_share or machine or self.state.extra.get("polar") or isinstance(motion.radius, Expr) or any(
-                isinstance(v, Expr) for v in motion.axes.values()) or self._short_of_half_turn(motion, incremental, slack_share):
+        if self.keeps_radius(motion, incremental, machine):
             self._track(motion, incremental, machine)
             return None
         a1, a2, _ = PLANE_AXES[self.state.plane]
@@ -449,7 +506,7 @@ class _Rewriter:
             self._track(motion, incremental, machine)
             return None
         mm = self._mm()
-        slack = WRITE_SLACK_MM / mm + abs(float(motion.radius)) * slack_share  # type: ignore[arg-type]  # a number
+        slack = WRITE_SLACK_MM / mm + abs(float(motion.radius)) * self.target.R_ARC_FLOAT_SLACK  # type: ignore[arg-type]  # a number
         if r_centre_error(arc, slack) * mm <= R_FORM_TOLERANCE_MM:
             geometry.finish()
             return None
@@ -457,6 +514,17 @@ class _Rewriter:
                                   (arc.centre[0] - arc.start[0], arc.centre[1] - arc.start[1]), None)]
         geometry.finish()
         return motions
+
+    def keeps_radius(self, motion: Motion, incremental: bool, machine: bool) -> bool:
+        """The settle pass leaves the R arc unbuilt: no care for R (``Dialect.R_ARC_FLOAT_SLACK``), not judged here
+        (machine coordinates, polar, a computed word), or clearly short of half a turn (position settled)."""
+        share = self.target.R_ARC_FLOAT_SLACK
+        if not share or machine or self.state.extra.get("polar") or _computed(motion.radius):
+            return True
+        for value in motion.axes.values():
+            if _computed(value):
+                return True
+        return self._short_of_half_turn(motion, incremental, share)
 
     def _short_of_half_turn(self, motion: Motion, incremental: bool, slack_share: float) -> bool:
         """The R arc is clearly short of half a turn: R off by the slack moves its centre under half of
@@ -469,10 +537,11 @@ class _Rewriter:
         position = self.position
         s1, s2 = position.get(a1), position.get(a2)
         radius = motion.radius
-        if s1 is None or s2 is None or not isinstance(radius, (int, float)):
-            return False
+        if s1 is None or s2 is None or not (type(radius) is float or isinstance(radius, (int, float))):
+            return False  # (a float first: cheap compiled, a test of a tuple of types is not)
         e1, e2 = motion.axes.get(a1, s1), motion.axes.get(a2, s2)
-        if not isinstance(e1, (int, float)) or not isinstance(e2, (int, float)):
+        if not (type(e1) is float or isinstance(e1, (int, float))) or not (
+                type(e2) is float or isinstance(e2, (int, float))):
             return False
         mm = self._mm()
         half = math.hypot(e1 - s1, e2 - s2) * mm / 2.0
