@@ -11,7 +11,7 @@ the same state is that record with its hole position and start moved.
 
 from __future__ import annotations
 
-from typing import Any, Final
+from typing import Any, Final, cast
 
 from mypy_extensions import mypyc_attr
 
@@ -93,7 +93,8 @@ class NextHoleLane(HoleLane):
         spot = {first: float(words[first]) if first in words else a,
                 second: float(words[second]) if second in words else b}
         # the tool's X, Y and Z, each known (the plane's three axes are): with no other axis, the whole of it
-        here = dict(tool) if len(tool) == 3 else {k: v for k, v in tool.items() if k in "XYZ" and v is not None}
+        here = cast("dict[str, float]", dict(tool)) if len(tool) == 3 else {
+            k: v for k, v in tool.items() if k in "XYZ" and v is not None}
         cycle = CannedCycle(
             pattern.kind, call=False, semantics=pattern.semantics, return_level=pattern.return_level,
             plane=pattern.plane, initial=pattern.initial, r=pattern.r, bottom=pattern.bottom, top=pattern.top,
