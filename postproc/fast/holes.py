@@ -90,8 +90,8 @@ class NextHoleLane(HoleLane):
                 if type(value) is not float and isinstance(value, Expr):  # (a float first: cheaper)
                     return False  # the resolver keeps a computed word verbatim first
                 words[letter] = value
-        spot = {first: float(words[first]) if first in words else a,
-                second: float(words[second]) if second in words else b}
+        va, vb = words.get(first), words.get(second)
+        spot = {first: a if va is None else float(va), second: b if vb is None else float(vb)}
         # the tool's X, Y and Z, each known (the plane's three axes are): with no other axis, the whole of it
         here = cast("dict[str, float]", dict(tool)) if len(tool) == 3 else {
             k: v for k, v in tool.items() if k in "XYZ" and v is not None}
@@ -120,9 +120,9 @@ class NextHoleLane(HoleLane):
         over_a, over_b = spot[first] + 0.0, spot[second] + 0.0
         level = expansion.return_level(cycle)
         sections = block.sections
-        block.add(cycle)
         compound = CompoundMotion.lazy(cycle.kind, lazy)
-        block.add(compound)
+        sections["CannedCycle"] = cycle  # (``block.add``: each section at its KEY)
+        sections["CompoundMotion"] = compound
         state.extra[ACTIVE_KEY] = (cycle, expansion)
         motion = sections.get("Motion")
         if motion is not None and motion.mode is None:  # type: ignore[attr-defined]
@@ -193,12 +193,13 @@ def _next_hole_only(block: Block, plane: str) -> bool:
     """A block that only moves an active cycle to its next hole: position words on the plane's two axes
     (``X.. Y..`` in G17), at least one, maybe a block number and a comment."""
     values = block.values
-    if not values:
-        return False  # not cycle data: the resolver leaves it
     first, second, _ = PLANE_AXES[plane]
-    for letter in values:
-        if letter != first and letter != second:
+    size = len(values)
+    if size == 1:
+        if first not in values and second not in values:
             return False
+    elif size != 2 or first not in values or second not in values:
+        return False  # none (not cycle data: the resolver leaves it), or another letter
     sections = block.sections
     if len(sections) == 1 and "Motion" in sections:
         return True  # the commonest: the block syntax's Motion(None), a repeat of the active cycle
