@@ -157,15 +157,15 @@ class CannedCycleResolveSyntax(Syntax):
             return  # a reference return (group 00) leaves the cycle in force
         if motion is None and _any_key(sections, _NOT_CYCLE_DATA):
             return  # G04 (its P is the dwell's), a G10, a verbatim code such as M98 P..: not cycle data
+        lane = ctx.hole_lane  # the run's next-hole lane, where it applies (``postproc.fast.holes``): it takes
+        if lane is not None and _NATIVE_KEY not in state.extra and lane.repeat(block, ctx):  # only words of
+            return  # the plane's axes, and declines a computed one (the checks below hold for what it takes)
         if _any_key(block.values, self._letters(ctx)[0]):
             if _NATIVE_KEY in state.extra or _computed(block):  # a hole known only when the program runs
                 self._native(block, ctx, state.cycle.kind)
                 return
-            lane = ctx.hole_lane  # the run's next-hole lane, where it applies (``postproc.fast.holes``)
-            if lane is None:
-                self._resolve_or_drop(block, ctx, state.cycle.kind, False)
-            elif not lane.repeat(block, ctx):
-                self._resolve_or_drop(block, ctx, state.cycle.kind, False)
+            self._resolve_or_drop(block, ctx, state.cycle.kind, False)
+            if lane is not None:
                 lane.resolved(block, ctx)
 
     def _native(self, block: Block, ctx: Context, kind: str) -> None:

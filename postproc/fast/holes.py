@@ -11,7 +11,7 @@ the same state is that record with its hole position and start moved.
 
 from __future__ import annotations
 
-from typing import Any, Final
+from typing import Any, Final, cast
 
 from mypy_extensions import mypyc_attr
 
@@ -20,9 +20,9 @@ from ..errors import PostprocError
 from ..ir.expr import Expr
 from ..ir import Block, CompoundMotion
 from ..ir.state import PLANE_AXES, ModalState
-from ..cycles.expansion import CycleExpansion, holes
-from ..cycles.resolve import (DWELL_KEY, STATE_KEY, WORD_RANK, CannedCycleResolveSyntax, Failer, LazyExpansion,
-                              cycle_words, drop_cycle_sections)
+from ..cycles.expansion import CycleExpansion
+from ..cycles.resolve import (ACTIVE_KEY, DWELL_KEY, STATE_KEY, WORD_RANK, CannedCycleResolveSyntax, Failer,
+                              LazyExpansion, cycle_words, drop_cycle_sections)
 from ..cycles.rigid_tap import RIGID_KEY
 from ..cycles.section import CannedCycle
 
@@ -34,15 +34,22 @@ class Remembered:
     """A next-hole block the resolver resolved from its words: its cycle record, and what the resolver
     read from the state to make it (``signature``)."""
 
-    __slots__ = ("signature", "cycle", "expansion", "code", "peck", "limit", "order", "compound")
+    __slots__ = ("signature", "cycle", "expansion", "code", "peck", "limit", "axes", "order", "over", "deep",
+                 "compound")
 
     def __init__(self, signature: tuple[Any, ...], cycle: CannedCycle, expansion: CycleExpansion, code: str,
                  peck: str, limit: int) -> None:
         self.signature, self.cycle, self.expansion, self.code, self.peck = signature, cycle, expansion, code, peck
         self.limit = limit
-        first, second, _ = PLANE_AXES[cycle.plane]
+        self.axes: tuple[str, str, str] = PLANE_AXES[cycle.plane]
+        first, second, _ = self.axes
         self.order = (first, second) if WORD_RANK[first] < WORD_RANK[second] else (second, first)
         """The plane's two axes in ``WORD_ORDER``, the order the resolver keeps a block's words in."""
+        self.over = expansion.ENDS_OVER_THE_SPOT
+        """Every hole ends over its spot at the return level: the lane gives where the block leaves the tool
+        (``install``'s ``end``), its levels having passed ``end``'s checks for the remembered block."""
+        self.deep = self.over and cycle.r is not None and cycle.bottom is not None and cycle.r - cycle.bottom > DEEP
+        """Every hole's moves end where the hole before's do, but over its own spot (``moves_end``)."""
         self.compound: CompoundMotion | None = None
         """The motion of the last block resolved from this record: where its moves end, once a step has asked
         (``point_after.compound_end``), gives the next hole's (``moves_end``)."""
@@ -63,6 +70,7 @@ class NextHoleLane(HoleLane):
 
     def repeat(self, block: Block, ctx: Context) -> bool:
         state = ctx.state
+        values = block.values
         self.offered = state.distance == "absolute" and _next_hole_only(block, state.plane)
         if not self.offered:
             return False
@@ -70,12 +78,11 @@ class NextHoleLane(HoleLane):
         if memo is None or memo.signature != signature(state):
             return False
         pattern = memo.cycle
-        first, second, normal = PLANE_AXES[pattern.plane]
+        first, second, normal = memo.axes
         tool = state.position
         a, b, n = tool.get(first), tool.get(second), tool.get(normal)
         if a is None or b is None or n is None:
             return False  # the resolver says what is unknown
-        values = block.values
         words: dict[str, float | int] = {}
         for letter in memo.order:
             value = values.get(letter)
@@ -83,9 +90,11 @@ class NextHoleLane(HoleLane):
                 if type(value) is not float and isinstance(value, Expr):  # (a float first: cheaper)
                     return False  # the resolver keeps a computed word verbatim first
                 words[letter] = value
-        spot = {first: float(words[first]) if first in words else a,
-                second: float(words[second]) if second in words else b}
-        here = {k: v for k, v in tool.items() if k in "XYZ" and v is not None}
+        va, vb = words.get(first), words.get(second)
+        spot = {first: a if va is None else float(va), second: b if vb is None else float(vb)}
+        # the tool's X, Y and Z, each known (the plane's three axes are): with no other axis, the whole of it
+        here = cast("dict[str, float]", dict(tool)) if len(tool) == 3 else {
+            k: v for k, v in tool.items() if k in "XYZ" and v is not None}
         cycle = CannedCycle(
             pattern.kind, call=False, semantics=pattern.semantics, return_level=pattern.return_level,
             plane=pattern.plane, initial=pattern.initial, r=pattern.r, bottom=pattern.bottom, top=pattern.top,
@@ -96,27 +105,35 @@ class NextHoleLane(HoleLane):
         fail = Failer(ctx, block, memo.code, False)
         fail.words = words
         expansion = memo.expansion
-        end: dict[str, float] | None = None
-        over = (0.0, 0.0)
-        if expansion.ENDS_OVER_THE_SPOT:  # its levels passed ``end``'s checks for the remembered block
-            over = holes(cycle)[0]  # (the spot as the expansion makes it: X-0. ends at 0.0, as ``end`` finds)
-            end = dict(here)
-            end[first], end[second], end[normal] = over[0], over[1], expansion.return_level(cycle)
+        lazy = LazyExpansion(expansion, cycle, memo.limit, fail, memo.code, memo.peck, None, ctx)
         self.offered = False
+        if not memo.over:
+            try:  # the expansion finds where the tool ends (and refuses what it refuses)
+                self.resolver.install(block, ctx, cycle, lazy, None)
+            except PostprocError:
+                drop_cycle_sections(block)
+                raise
+            return True
+        # ``install`` given where the block leaves the tool, which it then does without failing: its record
+        # and motion added, the block's Motion(None) gone, the tool moved over the spot (as ``holes``
+        # makes it: X-0. ends at 0.0) to the return level (a next-hole block has no CycleCall)
+        over_a, over_b = spot[first] + 0.0, spot[second] + 0.0
+        level = expansion.return_level(cycle)
+        sections = block.sections
+        compound = CompoundMotion.lazy(cycle.kind, lazy)
+        sections["CannedCycle"] = cycle  # (``block.add``: each section at its KEY)
+        sections["CompoundMotion"] = compound
+        state.extra[ACTIVE_KEY] = (cycle, expansion)
+        motion = sections.get("Motion")
+        if motion is not None and motion.mode is None:  # type: ignore[attr-defined]
+            del sections["Motion"]
+        tool[first], tool[second], tool[normal] = over_a, over_b, level
         before = memo.compound
-        try:
-            self.resolver.install(block, ctx, cycle, LazyExpansion(expansion, cycle, memo.limit, fail, memo.code,
-                                                                   memo.peck, None, ctx), end)
-        except PostprocError:
-            drop_cycle_sections(block)
-            raise
-        compound = block.sections.get("CompoundMotion")
-        if isinstance(compound, CompoundMotion):
-            if end is not None and before is not None and before.ended:
-                moved = moves_end(before.end, cycle, over)
-                if moved is not None:
-                    compound.end, compound.ended = moved, True
-            memo.compound = compound
+        if memo.deep and before is not None and before.ended:
+            moved = moves_end(before.end, memo.axes, over_a, over_b)
+            if moved is not None:
+                compound.end, compound.ended = moved, True
+        memo.compound = compound
         return True
 
     def resolved(self, block: Block, ctx: Context) -> None:
@@ -138,24 +155,23 @@ DEEP: Final = 1e-6
 a move at every hole, wherever the tool stood before it."""
 
 
-def moves_end(before: dict[str, float | None] | None, cycle: CannedCycle,
-              over: tuple[float, float]) -> dict[str, float | None] | None:
+def moves_end(before: dict[str, float | None] | None, axes: tuple[str, str, str], a: float,
+              b: float) -> dict[str, float | None] | None:
     """Where the moves of a next-hole block of one hole end (``point_after.compound_end``), from where those of
     the block before it, resolved from the same record, end (``before``), or None (unsure: the general walk
-    finds it). A family that ``ENDS_OVER_THE_SPOT`` moves only X, Y and Z, and every hole's moves from its cut
-    to the bottom on are the same whatever the tool's level before the hole: its last move, which names the
-    three axes, is over the hole's spot (``over``: the plane's two axes as the expansion's loop makes them,
-    ``holes``) at the same level as the hole before. ``tests/test_cycle_repeat.py`` holds the answer to the
-    walk over the moves."""
-    if before is None or cycle.repeat != 1 or cycle.r is None or cycle.bottom is None \
-            or not cycle.r - cycle.bottom > DEEP:
-        return None
-    first, second, normal = PLANE_AXES[cycle.plane]
-    if len(before) != 3 or first not in before or second not in before or before.get(normal) is None:
+    finds it). For a record whose family ``ENDS_OVER_THE_SPOT`` and whose bottom lies ``DEEP`` below R
+    (``Remembered.deep``): such a family moves only X, Y and Z, and every hole's moves from its cut to the
+    bottom on are the same whatever the tool's level before the hole: its last move, which names the three
+    axes (``axes``: the plane's two, then the normal), is over the hole's spot (``a``, ``b``: as the
+    expansion's loop makes them, ``holes``) at the same level as the hole before.
+    ``tests/test_cycle_repeat.py`` holds the answer to the walk over the moves."""
+    first, second, normal = axes
+    if before is None or len(before) != 3 or first not in before or second not in before \
+            or before.get(normal) is None:
         return None
     moved = dict(before)
-    moved[first] = over[0]
-    moved[second] = over[1]
+    moved[first] = a
+    moved[second] = b
     return moved
 
 
@@ -175,12 +191,19 @@ def signature(state: ModalState) -> tuple[Any, ...]:
 
 def _next_hole_only(block: Block, plane: str) -> bool:
     """A block that only moves an active cycle to its next hole: position words on the plane's two axes
-    (``X.. Y..`` in G17), maybe a block number and a comment."""
+    (``X.. Y..`` in G17), at least one, maybe a block number and a comment."""
+    values = block.values
     first, second, _ = PLANE_AXES[plane]
-    for letter in block.values:
-        if letter != first and letter != second:
+    size = len(values)
+    if size == 1:
+        if first not in values and second not in values:
             return False
-    for key in block.sections:
+    elif size != 2 or first not in values or second not in values:
+        return False  # none (not cycle data: the resolver leaves it), or another letter
+    sections = block.sections
+    if len(sections) == 1 and "Motion" in sections:
+        return True  # the commonest: the block syntax's Motion(None), a repeat of the active cycle
+    for key in sections:
         if key not in _NEXT_HOLE_SECTIONS:
             return False
     return True
