@@ -30,7 +30,8 @@ no move only (grbl's family adds a spindle stop there, before a program stop); `
 ``check_reference_return``, asked of a reference return only."""
 _BASE: Final = frozenset(WordWriter.__mro__)
 LINES_KEPT: Final = 256
-"""The one-word lines ``ExpansionMoves`` remembers at most (then it starts again): a row of holes writes a few."""
+"""The numbers of one axis (and code) ``ExpansionMoves`` remembers at most (then it starts again): a row of holes
+writes a few."""
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -47,66 +48,134 @@ class ExpansionMoves(MoveLane):
         self.linear = codes.spell("motion", "linear") or ""
         """The codes of a rapid and a feed move, spelled once ('': the table has none, the general path
         refuses the move)."""
-        self.lines: dict[tuple[str, str, float, str], str] = {}
-        """(code, axis, number, units) -> the line of a move that writes that one word, where spelling its
-        number changes nothing of the writer (no rounding, nothing carried: ``_position`` then reads the
-        writer's table of exact texts): an expansion writes the same few lines (``G1 Z-5.``, ``G0 Z2.``) at every
-        hole."""
+        self.units = writer.modal.units
+        """The units the numbers below were spelt in (another: they are forgotten)."""
+        self.lines: list[dict[float, str]] = [{} for _ in range(2 * len(SLOTS))]
+        """Per code (rapid, feed) and axis (``SLOTS``): number -> the line of a move that writes that one word,
+        where spelling its number changes nothing of the writer (no rounding, nothing carried: ``_position``
+        then reads the writer's table of exact texts): an expansion writes the same few lines (``G1 Z-5.``,
+        ``G0 Z2.``) at every hole. A float key, not a tuple: no tuple to build and hash a move."""
+        self.numbers: list[dict[float, str]] = [{} for _ in SLOTS]
+        """Per axis (``SLOTS``): number -> its text, spelt likewise, for the moves that write more than one word
+        (a hole's positioning, ``G0 X6.35 Y0. Z2.``: the level and the row's other axis repeat)."""
         self.driven: frozenset[str] | None = writer.DRIVEN_AXES
         """The axes the controller drives (None: every one): a move of another is left to the general path,
         which refuses it."""
+        self.last: dict[str, float | Expr] | None = None
+        """The axes of the move this lane wrote last, while the moves it writes follow one another (``before``
+        is then that very dict: its numbers are the ones below, compared without a look-up by letter)."""
+        self.at_x = self.at_y = self.at_z = 0.0
+        self.known = 0
+        """Where ``last`` stands: its X, Y and Z numbers, and which of them it has (bit ``1 << slot``)."""
 
     def line(self, item: Motion, before: dict[str, float | Expr] | None, block: Block) -> str | None:
         """The move's line, or None. Its words are checked before any is spelt: spelling one may change the
         writer's state (what a rounding carries), so a move left to the general path is spelt there only.
-        (One pass checks the words and counts those written, and a move that writes one word, the commonest
-        of a hole, spells it without walking its words again.)"""
+        (One pass checks the words, compares each with where the tool stands and counts those written, and a
+        move that writes one word, the commonest of a hole, spells it without walking its words again.)"""
+        if before is None:
+            self.last = None  # (a new expansion, or a move after an item the tool does not stand still for)
         if item.center is not None or item.radius is not None:
             return None
         mode = item.mode
-        code = self.rapid if mode == "rapid" else self.linear if mode == "linear" else ""
+        feeding = mode == "linear"
+        code = self.rapid if mode == "rapid" else self.linear if feeding else ""
         writer = self.writer
         if not code or writer.modal.distance != "absolute":
             return None  # (not absolute: ``move_line`` writes the distance mode's code first)
         axes = item.axes
         driven = self.driven
+        remembered = before is not None and before is self.last
+        known = self.known
         written = 0
         last = ""
         last_value = 0.0
+        last_slot = -1
+        has = 0
+        x = y = z = 0.0
         for axis, value in axes.items():
             if type(value) is not float or (driven is not None and axis not in driven):
                 return None
-            if before is not None:
+            number: float = value
+            slot = _slot(axis)
+            if slot == 0:
+                x = number
+            elif slot == 1:
+                y = number
+            elif slot == 2:
+                z = number
+            if slot >= 0:
+                has |= 1 << slot
+            if remembered:
+                if slot >= 0 and known & (1 << slot) and number == (
+                        self.at_x if slot == 0 else self.at_y if slot == 1 else self.at_z):
+                    continue
+            elif before is not None:
                 was = before.get(axis)
                 if type(was) is float and was == value:
                     continue
             written += 1
-            last, last_value = axis, value
+            last, last_value, last_slot = axis, number, slot
         if written == 0:
             return None  # every axis left out: ``motion_words`` asks ``left_out`` of a move with none
+        units = writer.modal.units
+        if units != self.units:
+            self._forget(units)
         as_written = block.canonical and writer.source_numbers
         if written == 1:
-            if writer.rounding or writer.carry or (as_written and _has_word(block, last)):
-                return f"{code} {last}{self._number(writer, block, last, last_value, as_written)}\n"
-            key = (code, last, last_value, writer.modal.units)
-            line = self.lines.get(key)
-            if line is None:
-                line = f"{code} {last}{_position(writer, last, last_value, False)}\n"
-                if not writer.carry:  # (spelt exactly: the same line every time)
-                    if len(self.lines) >= LINES_KEPT:
-                        self.lines.clear()
-                    self.lines[key] = line
-            return line
-        words = [code]
-        for axis, value in axes.items():
-            if not isinstance(value, float):
-                return None  # (none: tested above, before a word was spelt)
-            if before is not None:
-                was = before.get(axis)
-                if type(was) is float and was == value:
-                    continue
-            words.append(axis + self._number(writer, block, axis, value, as_written))
-        return " ".join(words) + "\n"
+            if writer.rounding or writer.carry or last_slot < 0 or (as_written and _has_word(block, last)):
+                text = f"{code} {last}{self._number(writer, block, last, last_value, as_written)}\n"
+            else:
+                lines = self.lines[len(SLOTS) + last_slot if feeding else last_slot]
+                found = lines.get(last_value)
+                if found is None:
+                    found = f"{code} {last}{_position(writer, last, last_value, False)}\n"
+                    if not writer.carry:  # (spelt exactly: the same line every time)
+                        _keep(lines, last_value, found)
+                text = found
+        else:
+            words = [code]
+            for axis, value in axes.items():
+                if not isinstance(value, float):
+                    return None  # (none: tested above, before a word was spelt)
+                if remembered:
+                    slot = _slot(axis)
+                    if slot >= 0 and known & (1 << slot) and value == (
+                            self.at_x if slot == 0 else self.at_y if slot == 1 else self.at_z):
+                        continue
+                elif before is not None:
+                    was = before.get(axis)
+                    if type(was) is float and was == value:
+                        continue
+                words.append(axis + self._word(writer, block, axis, value, as_written))
+            text = " ".join(words) + "\n"
+        if len(axes) == _count(has):  # (every axis one of ``SLOTS``: where the tool stands is these three)
+            self.last = axes
+            self.at_x, self.at_y, self.at_z, self.known = x, y, z, has
+        else:
+            self.last = None
+        return text
+
+    def _forget(self, units: str) -> None:
+        """Numbers spelt in other units than ``units``: forgotten."""
+        self.units = units
+        for lines in self.lines:
+            lines.clear()
+        for numbers in self.numbers:
+            numbers.clear()
+
+    def _word(self, writer: WordWriter, block: Block, axis: str, value: float, as_written: bool) -> str:
+        """``_number``, from ``numbers`` where spelling it changes nothing of the writer (as ``lines``)."""
+        slot = _slot(axis)
+        if writer.rounding or writer.carry or slot < 0 or (as_written and _has_word(block, axis)):
+            return self._number(writer, block, axis, value, as_written)
+        numbers = self.numbers[slot]
+        text = numbers.get(value)
+        if text is None:
+            text = _position(writer, axis, value, False)
+            if not writer.carry:
+                _keep(numbers, value, text)
+        return text
 
     @staticmethod
     def _number(writer: WordWriter, block: Block, axis: str, value: float, as_written: bool) -> str:
@@ -114,6 +183,33 @@ class ExpansionMoves(MoveLane):
         writer's, else ``_position``."""
         number = writer.source_number(block, axis, value, False) if as_written else None
         return number if number is not None else _position(writer, axis, value, False)
+
+
+SLOTS: Final = ("X", "Y", "Z")
+"""The axes an expansion's moves name (plane and drilling axis), each a slot of ``ExpansionMoves``' memories."""
+
+
+def _slot(axis: str) -> int:
+    """``axis``'s place in ``SLOTS``, -1 for any other (a compare of one letter: cheaper than a look-up)."""
+    if axis == "X":
+        return 0
+    if axis == "Y":
+        return 1
+    if axis == "Z":
+        return 2
+    return -1
+
+
+def _count(bits: int) -> int:
+    """How many of the three slot bits are set."""
+    return (bits & 1) + (bits >> 1 & 1) + (bits >> 2 & 1)
+
+
+def _keep(memory: dict[float, str], value: float, text: str) -> None:
+    """Remember ``text`` for ``value``, at most ``LINES_KEPT`` numbers (then start again)."""
+    if len(memory) >= LINES_KEPT:
+        memory.clear()
+    memory[value] = text
 
 
 def _has_word(block: Block, letter: str) -> bool:
