@@ -11,7 +11,7 @@ then writes it. Each number is spelt by the writer's own functions (``_position`
 
 from __future__ import annotations
 
-from typing import Final
+from typing import Any, Final
 
 from mypy_extensions import mypyc_attr
 
@@ -48,25 +48,37 @@ class ExpansionMoves(MoveLane):
         self.linear = codes.spell("motion", "linear") or ""
         """The codes of a rapid and a feed move, spelled once ('': the table has none, the general path
         refuses the move)."""
+        driven: frozenset[str] | None = writer.DRIVEN_AXES
+        self.driven = driven
+        """The axes the controller drives (None: every one): a move of another is left to the general path,
+        which refuses it."""
+        self.drives_x = driven is None or "X" in driven
+        self.drives_y = driven is None or "Y" in driven
+        self.drives_z = driven is None or "Z" in driven
+        """Whether it drives X, Y and Z, the axes of an expansion's moves (asked once, not at every move)."""
         self.units = writer.modal.units
         """The units the numbers below were spelt in (another: they are forgotten)."""
-        self.lines: list[dict[float, str]] = [{} for _ in range(2 * len(SLOTS))]
-        """Per code (rapid, feed) and axis (``SLOTS``): number -> the line of a move that writes that one word,
+        self.lines: list[dict[float, str]] = [{} for _ in range(6)]
+        """Per code (rapid, feed) and axis (X, Y, Z): number -> the line of a move that writes that one word,
         where spelling its number changes nothing of the writer (no rounding, nothing carried: ``_position``
         then reads the writer's table of exact texts): an expansion writes the same few lines (``G1 Z-5.``,
         ``G0 Z2.``) at every hole. A float key, not a tuple: no tuple to build and hash a move."""
-        self.numbers: list[dict[float, str]] = [{} for _ in SLOTS]
-        """Per axis (``SLOTS``): number -> its text, spelt likewise, for the moves that write more than one word
+        self.numbers: list[dict[float, str]] = [{}, {}, {}]
+        """Per axis (X, Y, Z): number -> its text, spelt likewise, for the moves that write more than one word
         (a hole's positioning, ``G0 X6.35 Y0. Z2.``: the level and the row's other axis repeat)."""
-        self.driven: frozenset[str] | None = writer.DRIVEN_AXES
-        """The axes the controller drives (None: every one): a move of another is left to the general path,
-        which refuses it."""
+        self.seen: list[Seen] = []
+        """The one-word lines of the moves since the last move that had no ``before`` (a hole's first), by
+        their place among them: the next hole's moves are the same lines in the same places, found by a compare
+        of numbers (``lines`` hashes a float)."""
+        self.place = 0
+        """The place of the next move among them."""
         self.last: dict[str, float | Expr] | None = None
-        """The axes of the move this lane wrote last, while the moves it writes follow one another (``before``
-        is then that very dict: its numbers are the ones below, compared without a look-up by letter)."""
+        """The axes of the move this lane wrote last, where they are X, Y and Z only, while the moves it writes
+        follow one another (``before`` is then that very dict: its numbers are the ones below, compared without
+        a look-up by letter)."""
         self.at_x = self.at_y = self.at_z = 0.0
-        self.known = 0
-        """Where ``last`` stands: its X, Y and Z numbers, and which of them it has (bit ``1 << slot``)."""
+        self.has_x = self.has_y = self.has_z = False
+        """Where ``last`` stands: its X, Y and Z numbers, and which of them it has."""
 
     def line(self, item: Motion, before: dict[str, float | Expr] | None, block: Block) -> str | None:
         """The move's line, or None. Its words are checked before any is spelt: spelling one may change the
@@ -75,6 +87,7 @@ class ExpansionMoves(MoveLane):
         move that writes one word, the commonest of a hole, spells it without walking its words again.)"""
         if before is None:
             self.last = None  # (a new expansion, or a move after an item the tool does not stand still for)
+            self.place = 0
         if item.center is not None or item.radius is not None:
             return None
         mode = item.mode
@@ -84,38 +97,54 @@ class ExpansionMoves(MoveLane):
         if not code or writer.modal.distance != "absolute":
             return None  # (not absolute: ``move_line`` writes the distance mode's code first)
         axes = item.axes
-        driven = self.driven
         remembered = before is not None and before is self.last
-        known = self.known
         written = 0
         last = ""
         last_value = 0.0
+        last_object: Any = None
         last_slot = -1
-        has = 0
         x = y = z = 0.0
+        has_x = has_y = has_z = other = False
+        write_x = write_y = write_z = False
         for axis, value in axes.items():
-            if type(value) is not float or (driven is not None and axis not in driven):
+            if type(value) is not float:
                 return None
             number: float = value
-            slot = _slot(axis)
-            if slot == 0:
-                x = number
-            elif slot == 1:
-                y = number
-            elif slot == 2:
-                z = number
-            if slot >= 0:
-                has |= 1 << slot
-            if remembered:
-                if slot >= 0 and known & (1 << slot) and number == (
-                        self.at_x if slot == 0 else self.at_y if slot == 1 else self.at_z):
-                    continue
-            elif before is not None:
+            slot = -1
+            same = False
+            if axis == "X":
+                if not self.drives_x:
+                    return None
+                slot, x, has_x = 0, number, True
+                same = remembered and self.has_x and number == self.at_x
+            elif axis == "Y":
+                if not self.drives_y:
+                    return None
+                slot, y, has_y = 1, number, True
+                same = remembered and self.has_y and number == self.at_y
+            elif axis == "Z":
+                if not self.drives_z:
+                    return None
+                slot, z, has_z = 2, number, True
+                same = remembered and self.has_z and number == self.at_z
+            else:
+                driven = self.driven
+                if driven is not None and axis not in driven:
+                    return None
+                other = True  # (``remembered``: not in ``before``, written)
+            if before is not None and not remembered:
                 was = before.get(axis)
-                if type(was) is float and was == value:
-                    continue
+                same = type(was) is float and was == value
+            if same:
+                continue
+            if slot == 0:
+                write_x = True
+            elif slot == 1:
+                write_y = True
+            elif slot == 2:
+                write_z = True
             written += 1
-            last, last_value, last_slot = axis, number, slot
+            last, last_value, last_object, last_slot = axis, number, value, slot
         if written == 0:
             return None  # every axis left out: ``motion_words`` asks ``left_out`` of a move with none
         units = writer.modal.units
@@ -126,35 +155,55 @@ class ExpansionMoves(MoveLane):
             if writer.rounding or writer.carry or last_slot < 0 or (as_written and _has_word(block, last)):
                 text = f"{code} {last}{self._number(writer, block, last, last_value, as_written)}\n"
             else:
-                lines = self.lines[len(SLOTS) + last_slot if feeding else last_slot]
-                found = lines.get(last_value)
-                if found is None:
-                    found = f"{code} {last}{_position(writer, last, last_value, False)}\n"
-                    if not writer.carry:  # (spelt exactly: the same line every time)
-                        _keep(lines, last_value, found)
-                text = found
+                text = self._one_word(code, feeding, last, last_slot, last_value, last_object)
         else:
             words = [code]
             for axis, value in axes.items():
                 if not isinstance(value, float):
                     return None  # (none: tested above, before a word was spelt)
-                if remembered:
-                    slot = _slot(axis)
-                    if slot >= 0 and known & (1 << slot) and value == (
-                            self.at_x if slot == 0 else self.at_y if slot == 1 else self.at_z):
-                        continue
-                elif before is not None:
-                    was = before.get(axis)
-                    if type(was) is float and was == value:
-                        continue
-                words.append(axis + self._word(writer, block, axis, value, as_written))
+                if axis == "X":
+                    write = write_x
+                elif axis == "Y":
+                    write = write_y
+                elif axis == "Z":
+                    write = write_z
+                else:
+                    was = None if before is None else before.get(axis)
+                    write = not (type(was) is float and was == value)
+                if write:
+                    words.append(axis + self._word(writer, block, axis, value, as_written))
             text = " ".join(words) + "\n"
-        if len(axes) == _count(has):  # (every axis one of ``SLOTS``: where the tool stands is these three)
-            self.last = axes
-            self.at_x, self.at_y, self.at_z, self.known = x, y, z, has
-        else:
+        if other:
             self.last = None
+        else:
+            self.last = axes
+            self.at_x, self.at_y, self.at_z = x, y, z
+            self.has_x, self.has_y, self.has_z = has_x, has_y, has_z
         return text
+
+    def _one_word(self, code: str, feeding: bool, axis: str, slot: int, value: float, key: Any) -> str:
+        """The line of a move that writes one word, an X, Y or Z at ``value`` (``key``: that number as the move
+        holds it), where spelling it changes nothing of the writer: the line at this place of the last hole
+        where it is the same, else from ``lines``, else spelt."""
+        place = self.place
+        self.place = place + 1
+        seen = self.seen
+        if place < len(seen):
+            was = seen[place]
+            if was.value == value and was.slot == slot and was.feeding == feeding:
+                return was.line
+        lines = self.lines[3 + slot if feeding else slot]
+        line: str | None = lines.get(key)
+        if line is None:
+            line = f"{code} {axis}{_position(self.writer, axis, value, False)}\n"
+            if self.writer.carry:
+                return line  # (not spelt exactly: not the same line every time)
+            _keep(lines, value, line)
+        if place < len(seen):
+            seen[place] = Seen(feeding, slot, value, line)
+        elif place < LINES_KEPT:
+            seen.append(Seen(feeding, slot, value, line))
+        return line
 
     def _forget(self, units: str) -> None:
         """Numbers spelt in other units than ``units``: forgotten."""
@@ -163,10 +212,11 @@ class ExpansionMoves(MoveLane):
             lines.clear()
         for numbers in self.numbers:
             numbers.clear()
+        self.seen.clear()
 
     def _word(self, writer: WordWriter, block: Block, axis: str, value: float, as_written: bool) -> str:
         """``_number``, from ``numbers`` where spelling it changes nothing of the writer (as ``lines``)."""
-        slot = _slot(axis)
+        slot = 0 if axis == "X" else 1 if axis == "Y" else 2 if axis == "Z" else -1
         if writer.rounding or writer.carry or slot < 0 or (as_written and _has_word(block, axis)):
             return self._number(writer, block, axis, value, as_written)
         numbers = self.numbers[slot]
@@ -185,24 +235,14 @@ class ExpansionMoves(MoveLane):
         return number if number is not None else _position(writer, axis, value, False)
 
 
-SLOTS: Final = ("X", "Y", "Z")
-"""The axes an expansion's moves name (plane and drilling axis), each a slot of ``ExpansionMoves``' memories."""
+class Seen:
+    """A one-word line ``ExpansionMoves`` wrote at a place of a hole: its code (feed or rapid), axis (0, 1, 2:
+    X, Y, Z) and number."""
 
+    __slots__ = ("feeding", "slot", "value", "line")
 
-def _slot(axis: str) -> int:
-    """``axis``'s place in ``SLOTS``, -1 for any other (a compare of one letter: cheaper than a look-up)."""
-    if axis == "X":
-        return 0
-    if axis == "Y":
-        return 1
-    if axis == "Z":
-        return 2
-    return -1
-
-
-def _count(bits: int) -> int:
-    """How many of the three slot bits are set."""
-    return (bits & 1) + (bits >> 1 & 1) + (bits >> 2 & 1)
+    def __init__(self, feeding: bool, slot: int, value: float, line: str) -> None:
+        self.feeding, self.slot, self.value, self.line = feeding, slot, value, line
 
 
 def _keep(memory: dict[float, str], value: float, text: str) -> None:
