@@ -235,6 +235,7 @@ class ExpansionMoves(MoveLane):
         return number if number is not None else _position(writer, axis, value, False)
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class Seen:
     """A one-word line ``ExpansionMoves`` wrote at a place of a hole: its code (feed or rapid), axis (0, 1, 2:
     X, Y, Z) and number."""
