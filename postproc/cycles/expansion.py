@@ -138,7 +138,7 @@ class ToolPath:
                 and _near(to_b, was_b) and _near(to_n, was_n):
             return
         axes = self._axes(to_a, to_b, to_n, given_a is None and given_b is None)
-        self.add(Motion(mode, axes))
+        self.add(self._made(mode, axes, to_a, to_b, to_n))
         self.last = axes
         self.a = to_a
         self.b = to_b
@@ -156,6 +156,18 @@ class ToolPath:
             axes[second] = b
         axes[normal] = n
         return axes
+
+    def _made(self, mode: str, axes: dict[str, float | Expr], a: Any, b: Any, n: Any) -> Motion:
+        """The move with ``axes``: a ``PathMove`` where its three numbers are floats (a plain ``Motion``
+        otherwise, as a move to a computed position)."""
+        if type(a) is not float or type(b) is not float or type(n) is not float:
+            return Motion(mode, axes)
+        first = self.axes[0]
+        if first == "X":
+            return PathMove(mode, axes, a, b, n)  # G17 (XY)
+        if first == "Z":
+            return PathMove(mode, axes, b, n, a)  # G18 (ZX)
+        return PathMove(mode, axes, n, a, b)  # G19 (YZ)
 
     def dwell(self, seconds: float | None, always: bool = False) -> None:
         """A dwell; none without P unless ``always`` (``Semantics.dwell_always``)."""
@@ -182,6 +194,32 @@ class ToolPath:
         if self.n is not None:
             end[normal] = self.n
         return end
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class PathMove(Motion):
+    """A move of an expansion to a spot known in X, Y and Z: a ``Motion`` (``axes`` names the three, in that
+    order) that also holds its three numbers as floats, so that the expansion-move lane
+    (``postproc.fast.expansion_moves``) reads them without walking the dict. ``made``: the dict they are the
+    numbers of (a step that gives the move other axes, ``cycles.lathe_offsets``, leaves them behind: ``axes``
+    is then another dict). Equal to a ``Motion`` of the same mode and axes: it is one."""
+
+    __slots__ = ("x", "y", "z", "made")
+
+    def __init__(self, mode: str, axes: dict[str, float | Expr], x: float, y: float, z: float) -> None:
+        super().__init__(mode, axes)
+        self.x = x
+        self.y = y
+        self.z = z
+        self.made = axes
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Motion):
+            return NotImplemented
+        return self._key() == other._key()
+
+    def __hash__(self) -> int:
+        return hash((Motion, repr(self._key())))
 
 
 def _near(x: float, y: float) -> bool:

@@ -11,10 +11,11 @@ then writes it. Each number is spelt by the writer's own functions (``_position`
 
 from __future__ import annotations
 
-from typing import Any, Final
+from typing import Final
 
 from mypy_extensions import mypyc_attr
 
+from ..cycles.expansion import PathMove
 from ..ir import Block, Motion
 from ..ir.expr import Expr
 from ..output.writer_base import Writer
@@ -55,6 +56,7 @@ class ExpansionMoves(MoveLane):
         self.drives_x = driven is None or "X" in driven
         self.drives_y = driven is None or "Y" in driven
         self.drives_z = driven is None or "Z" in driven
+        self.drives_xyz = self.drives_x and self.drives_y and self.drives_z
         """Whether it drives X, Y and Z, the axes of an expansion's moves (asked once, not at every move)."""
         self.units = writer.modal.units
         """The units the numbers below were spelt in (another: they are forgotten)."""
@@ -96,12 +98,13 @@ class ExpansionMoves(MoveLane):
         writer = self.writer
         if not code or writer.modal.distance != "absolute":
             return None  # (not absolute: ``move_line`` writes the distance mode's code first)
+        if type(item) is PathMove and item.axes is item.made and self.drives_xyz:
+            return self._path_move(item, code, feeding, before, block)
         axes = item.axes
         remembered = before is not None and before is self.last
         written = 0
         last = ""
         last_value = 0.0
-        last_object: Any = None
         last_slot = -1
         x = y = z = 0.0
         has_x = has_y = has_z = other = False
@@ -144,7 +147,7 @@ class ExpansionMoves(MoveLane):
             elif slot == 2:
                 write_z = True
             written += 1
-            last, last_value, last_object, last_slot = axis, number, value, slot
+            last, last_value, last_slot = axis, number, slot
         if written == 0:
             return None  # every axis left out: ``motion_words`` asks ``left_out`` of a move with none
         units = writer.modal.units
@@ -155,7 +158,7 @@ class ExpansionMoves(MoveLane):
             if writer.rounding or writer.carry or last_slot < 0 or (as_written and _has_word(block, last)):
                 text = f"{code} {last}{self._number(writer, block, last, last_value, as_written)}\n"
             else:
-                text = self._one_word(code, feeding, last, last_slot, last_value, last_object)
+                text = self._one_word(code, feeding, last, last_slot, last_value)
         else:
             words = [code]
             for axis, value in axes.items():
@@ -181,10 +184,56 @@ class ExpansionMoves(MoveLane):
             self.has_x, self.has_y, self.has_z = has_x, has_y, has_z
         return text
 
-    def _one_word(self, code: str, feeding: bool, axis: str, slot: int, value: float, key: Any) -> str:
-        """The line of a move that writes one word, an X, Y or Z at ``value`` (``key``: that number as the move
-        holds it), where spelling it changes nothing of the writer: the line at this place of the last hole
-        where it is the same, else from ``lines``, else spelt."""
+    def _path_move(self, item: PathMove, code: str, feeding: bool, before: dict[str, float | Expr] | None,
+                   block: Block) -> str | None:
+        """``line`` of a ``PathMove`` (its axes X, Y and Z, in that order, at its ``x``, ``y``, ``z``), read from
+        its floats: the same words, compared and spelt the same way, without walking its dict."""
+        x, y, z = item.x, item.y, item.z
+        if before is None:
+            write_x = write_y = write_z = True
+        elif before is self.last:
+            write_x = not (self.has_x and x == self.at_x)
+            write_y = not (self.has_y and y == self.at_y)
+            write_z = not (self.has_z and z == self.at_z)
+        else:
+            was = before.get("X")
+            write_x = not (type(was) is float and was == x)
+            was = before.get("Y")
+            write_y = not (type(was) is float and was == y)
+            was = before.get("Z")
+            write_z = not (type(was) is float and was == z)
+        written = int(write_x) + int(write_y) + int(write_z)
+        if written == 0:
+            return None  # every axis left out: ``motion_words`` asks ``left_out`` of a move with none
+        writer = self.writer
+        units = writer.modal.units
+        if units != self.units:
+            self._forget(units)
+        as_written = block.canonical and writer.source_numbers
+        if written == 1:
+            axis, slot, value = ("X", 0, x) if write_x else ("Y", 1, y) if write_y else ("Z", 2, z)
+            if writer.rounding or writer.carry or (as_written and _has_word(block, axis)):
+                text = f"{code} {axis}{self._number(writer, block, axis, value, as_written)}\n"
+            else:
+                text = self._one_word(code, feeding, axis, slot, value)
+        else:
+            words = [code]
+            if write_x:
+                words.append("X" + self._word(writer, block, "X", x, as_written))
+            if write_y:
+                words.append("Y" + self._word(writer, block, "Y", y, as_written))
+            if write_z:
+                words.append("Z" + self._word(writer, block, "Z", z, as_written))
+            text = " ".join(words) + "\n"
+        self.last = item.axes
+        self.at_x, self.at_y, self.at_z = x, y, z
+        self.has_x = self.has_y = self.has_z = True
+        return text
+
+    def _one_word(self, code: str, feeding: bool, axis: str, slot: int, value: float) -> str:
+        """The line of a move that writes one word, an X, Y or Z at ``value``, where spelling it changes nothing
+        of the writer: the line at this place of the last hole where it is the same, else from ``lines``, else
+        spelt."""
         place = self.place
         self.place = place + 1
         seen = self.seen
@@ -193,7 +242,7 @@ class ExpansionMoves(MoveLane):
             if was.value == value and was.slot == slot and was.feeding == feeding:
                 return was.line
         lines = self.lines[3 + slot if feeding else slot]
-        line: str | None = lines.get(key)
+        line = lines.get(value)
         if line is None:
             line = f"{code} {axis}{_position(self.writer, axis, value, False)}\n"
             if self.writer.carry:
