@@ -6,9 +6,7 @@ axes ``_left_out`` leaves out, which ``motion_words`` spells), kept apart from t
 (STYLE.md 11). ``install_expansion`` gives it to a run only where the writer class writes a move of an
 expansion with the base's own methods (``MOVE_METHODS``), and ``tests/test_expansion_moves.py`` holds it to
 the general path on random hole programs. It answers None for any move it is not sure of; the general path
-then writes it. Each number is spelt by the writer's own functions (``_position``, ``source_number``). A move the
-expansion made to a spot known in X, Y and Z (``cycles.expansion.PathMove``) is read from its three floats, not
-from its dict, while the dict is still the one they are the numbers of.
+then writes it. Each number is spelt by the writer's own functions (``_position``, ``source_number``).
 """
 
 from __future__ import annotations
