@@ -143,3 +143,42 @@ def test_the_lane_writes_the_moves_of_a_row_of_holes() -> None:
         text = _run(program, "fanuc", "linuxcnc")
     assert written == ["G0 X0. Y0. Z2.\n", "G1 Z-5.\n", "G0 Z2.\n", "G0 X6.35 Y0. Z2.\n", "G1 Z-5.\n", "G0 Z2.\n"]
     assert "".join(written) in "".join(line for line in text.splitlines(keepends=True) if not line.startswith("("))
+
+
+def test_an_expansions_move_is_a_motion_of_its_axes() -> None:
+    """An expansion's move to a spot known in X, Y and Z (``PathMove``) equals the ``Motion`` of its mode and
+    axes, hashes as it, and holds the same three numbers as floats, in every plane."""
+    from postproc.cycles.expansion import PathMove, ToolPath
+    from postproc.cycles.section import CannedCycle
+
+    for plane, (first, second, normal) in (("XY", "XYZ"), ("ZX", "ZXY"), ("YZ", "YZX")):
+        cycle = CannedCycle("drill", semantics="fanuc", plane=plane, start={"X": 1.0, "Y": 2.0, "Z": 3.0})
+        path = ToolPath(cycle)
+        path.rapid(4.5, 5.5, 6.5)
+        path.rapid(level=-1.25)
+        moves = path.items
+        assert moves == [Motion("rapid", {first: 4.5, second: 5.5, normal: 6.5}),
+                         Motion("rapid", {first: 4.5, second: 5.5, normal: -1.25})]
+        for move in moves:
+            assert isinstance(move, PathMove)
+            assert list(move.axes) == ["X", "Y", "Z"]
+            assert (move.x, move.y, move.z) == (move.axes["X"], move.axes["Y"], move.axes["Z"])
+            assert hash(move) == hash(Motion(move.mode, dict(move.axes)))
+
+
+def test_a_move_given_other_axes_is_written_from_them() -> None:
+    """A step may give an expansion's move other axes (``cycles.lathe_offsets`` shifts them): the lane writes
+    the axes the move has then, not the numbers it was made with."""
+    from postproc.cycles.expansion import PathMove
+
+    writer = _writer("fanuc", "linuxcnc")
+    assert isinstance(writer, WordWriter)
+    lane = choose_moves(writer)
+    assert isinstance(lane, ExpansionMoves)
+    block = Block(1, None, "\n")
+    move = PathMove("rapid", {"X": 1.0, "Y": 2.0, "Z": 3.0}, 1.0, 2.0, 3.0)
+    assert lane.line(move, None, block) == "G0 X1. Y2. Z3.\n"
+    move.axes = {"X": 1.0, "Y": 2.0, "Z": 7.5}
+    assert lane.line(move, {"X": 1.0, "Y": 2.0, "Z": 3.0}, block) == "G0 Z7.5\n"
+    moved = PathMove("linear", {"X": 1.0, "Y": 2.0, "Z": -4.0}, 1.0, 2.0, -4.0)
+    assert lane.line(moved, move.axes, block) == "G1 Z-4.\n"

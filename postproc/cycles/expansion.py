@@ -60,7 +60,7 @@ class ToolPath:
     writer, the simulator and the lowering steps walk them more than once), bounded by ``limit``: at
     most ``limit`` items are ever held, then ``TooManyMoves``."""
 
-    __slots__ = ("axes", "start", "a", "b", "n", "items", "feed", "limit")
+    __slots__ = ("axes", "start", "a", "b", "n", "items", "feed", "limit", "last")
 
     def __init__(self, cycle: CannedCycle, limit: int = UNBOUNDED) -> None:
         self.axes = first, second, normal = PLANE_AXES[cycle.plane]
@@ -76,6 +76,9 @@ class ToolPath:
         self.feed = cycle.feed
         """Feed in force: the block's own F is already applied, so a Feed item appears only on a change."""
         self.limit = limit
+        self.last: dict[str, float | Expr] | None = None
+        """The axes of the last move made, while they name the plane's two axes and the normal at ``a``, ``b``
+        and ``n`` (None: not so): the next move's are a copy of them (``_axes``)."""
 
     def add(self, item: Section) -> None:
         """Append an item, counting it against the bound on moves per block."""
@@ -124,6 +127,7 @@ class ToolPath:
             # Fanuc's positioning at the level where the tool stands, not known here (after a reference
             # return in cycle mode): a move in the plane alone, the normal axis left where it is
             self.add(Motion(mode, _plane_move(self.axes, to_a, to_b)))
+            self.last = None
             self.a = to_a
             self.b = to_b
             return
@@ -133,10 +137,37 @@ class ToolPath:
         if was_a is not None and was_b is not None and was_n is not None and _near(to_a, was_a) \
                 and _near(to_b, was_b) and _near(to_n, was_n):
             return
-        self.add(Motion(mode, _xyz(self.axes[0], to_a, to_b, to_n)))
+        axes = self._axes(to_a, to_b, to_n, given_a is None and given_b is None)
+        self.add(self._made(mode, axes, to_a, to_b, to_n))
+        self.last = axes
         self.a = to_a
         self.b = to_b
         self.n = to_n
+
+    def _axes(self, a: Any, b: Any, n: Any, level_only: bool) -> dict[str, float | Expr]:
+        """The axes of a move to (a, b, n), in X, Y, Z order: a copy of the last move's with the numbers that
+        change set, ``level_only`` the normal's alone (a copy of a small dict clones its table; a new one
+        is built key by key, at twice the cost, and a hole's moves after its first change the level only)."""
+        first, second, normal = self.axes
+        last = self.last
+        axes = (_XYZ if last is None else last).copy()
+        if last is None or not level_only:
+            axes[first] = a
+            axes[second] = b
+        axes[normal] = n
+        return axes
+
+    def _made(self, mode: str, axes: dict[str, float | Expr], a: Any, b: Any, n: Any) -> Motion:
+        """The move with ``axes``: a ``PathMove`` where its three numbers are floats (a plain ``Motion``
+        otherwise, as a move to a computed position)."""
+        if type(a) is not float or type(b) is not float or type(n) is not float:
+            return Motion(mode, axes)
+        first = self.axes[0]
+        if first == "X":
+            return PathMove(mode, axes, a, b, n)  # G17 (XY)
+        if first == "Z":
+            return PathMove(mode, axes, b, n, a)  # G18 (ZX)
+        return PathMove(mode, axes, n, a, b)  # G19 (YZ)
 
     def dwell(self, seconds: float | None, always: bool = False) -> None:
         """A dwell; none without P unless ``always`` (``Semantics.dwell_always``)."""
@@ -165,6 +196,32 @@ class ToolPath:
         return end
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
+class PathMove(Motion):
+    """A move of an expansion to a spot known in X, Y and Z: a ``Motion`` (``axes`` names the three, in that
+    order) that also holds its three numbers as floats, so that the expansion-move lane
+    (``postproc.fast.expansion_moves``) reads them without walking the dict. ``made``: the dict they are the
+    numbers of (a step that gives the move other axes, ``cycles.lathe_offsets``, leaves them behind: ``axes``
+    is then another dict). Equal to a ``Motion`` of the same mode and axes: it is one."""
+
+    __slots__ = ("x", "y", "z", "made")
+
+    def __init__(self, mode: str, axes: dict[str, float | Expr], x: float, y: float, z: float) -> None:
+        super().__init__(mode, axes)
+        self.x = x
+        self.y = y
+        self.z = z
+        self.made = axes
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Motion):
+            return NotImplemented
+        return self._key() == other._key()
+
+    def __hash__(self) -> int:
+        return hash((Motion, repr(self._key())))
+
+
 def _near(x: float, y: float) -> bool:
     """Two positions closer than ``EPS`` (one level, one spot)."""
     return abs(x - y) < EPS
@@ -183,15 +240,8 @@ def _plane_move(axes: tuple[str, str, str], a: float, b: float) -> dict[str, flo
     return {first: a, second: b} if first < second else {second: b, first: a}
 
 
-def _xyz(first: str, a: float | Expr, b: float | Expr, n: float | Expr) -> dict[str, float | Expr]:
-    """The axes of a move in X, Y, Z order from its plane coordinates (first, second, normal). (Typed so
-    that compiled code passes the tool path's float objects on as they are, not unboxed and boxed again
-    for every move.)"""
-    if first == "X":
-        return {"X": a, "Y": b, "Z": n}  # G17 (XY)
-    if first == "Z":
-        return {"X": b, "Y": n, "Z": a}  # G18 (ZX)
-    return {"X": n, "Y": a, "Z": b}  # G19 (YZ)
+_XYZ: Final[dict[str, float | Expr]] = {"X": 0.0, "Y": 0.0, "Z": 0.0}
+"""The axes of a move, in X, Y, Z order, whatever the plane (``ToolPath._axes`` copies it and sets each)."""
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
