@@ -510,3 +510,20 @@ def test_a_gsk_program_for_grblhal_on_a_mill_set_up_is_checked_in_lathe_mode() -
     translate(io.StringIO(program), out, file="o0102.nc", source="gsk", target="grblhal", setup=with_tools(),
               diagnostics=Diagnostics(warn_stream=io.StringIO()))
     assert "G18 G7" in out.getvalue()
+
+
+def test_an_isg_program_header_inside_the_program_is_a_comment_for_linuxcnc_normalized() -> None:
+    """make fuzz (pairs, isg-linuxcnc, --normalize): an ISG program header after the first line ("% G87", a
+    program named G87) was copied as read, "% G87", which rs274 refuses ("Bad character '%' used": a '%' line
+    is only the file's first or last) [V: rs274 2.9]. It is the name as a comment, as without --normalize."""
+    program = "G90 G0 X0. Y0. Z10.\nG1 X1 F10\n% G87\nX3\nM30\n"
+    setup = MachineSetup()
+    written = []
+    for normalize in (False, True):
+        setup.output.normalize = normalize
+        out = io.StringIO()
+        translate(io.StringIO(program), out, file="t.nc", source="isg", target="linuxcnc", setup=setup)
+        written.append(out.getvalue())
+    assert written[1] == written[0] == "G21 G90 G0 X0. Y0. Z10.\nG1 X1. F10.\n(G87)\nG1 X3.\nM30\n"
+    if rs274_available():
+        run_rs274(written[1])  # raises where rs274 refuses the program
