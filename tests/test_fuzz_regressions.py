@@ -12,6 +12,7 @@ from postproc.errors import Diagnostics, ErrorList
 from postproc.setup.machine_setup import InputSettings, MachineSettings, MachineSetup
 from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
+from tests.support.fuzzing import check_translation, warned_difference
 from tests.support.generators.grblhal_targets import check as grblhal_check
 from tests.support.generators.macros import as_rs274_prints
 from tests.support.rs274 import available as rs274_available, canonical_moves, run_rs274
@@ -527,3 +528,37 @@ def test_an_isg_program_header_inside_the_program_is_a_comment_for_linuxcnc_norm
     assert written[1] == written[0] == "G21 G90 G0 X0. Y0. Z10.\nG1 X1. F10.\n(G87)\nG1 X3.\nM30\n"
     if rs274_available():
         run_rs274(written[1])  # raises where rs274 refuses the program
+
+
+LATHE = with_tools(MachineSetup(input=InputSettings(machine_type="lathe"), machine=MachineSettings(axes="XZ")))
+GRBL_ON_A_LATHE = "G21 G0 X0 Z10\nG1 X1 F100\n"
+
+
+def test_the_power_on_exact_path_for_a_lathe_without_path_codes_is_warned_of_and_listed_by_verify() -> None:
+    """make fuzz (new words, grblhal-gsk, lathe set-up): grblHAL runs in the exact path from power-on [V: grbl
+    gcode.h]; a GSK lathe has no path control code [?] (``postproc.lowering.path_at_start``): not written, with a
+    warning, and verify lists the difference. The fuzz took that for a defect; it is one the translation warned
+    of, as the lathe tool offset a mill control cannot apply."""
+    out = io.StringIO()
+    warnings = io.StringIO()
+    translate(io.StringIO(GRBL_ON_A_LATHE), out, file="t.nc", source="grblhal", target="gsk", setup=LATHE,
+              diagnostics=Diagnostics(warn_stream=warnings))
+    assert out.getvalue() == "G21 G00 X0. Z10.\nG01 X1. F100.\n"
+    assert "t.nc:1:1: warning: the grblhal controller runs this program in the exact path mode from power-on; a " \
+           "gsk lathe has no path control code here [?]" in warnings.getvalue()
+    report = verify_lines(io.StringIO(GRBL_ON_A_LATHE), io.StringIO(out.getvalue()), file_in="in.nc",
+                          file_out="out.nc", source="grblhal", target="gsk", setup=LATHE, tolerance=0.0)
+    assert not report.ok and "path control differs: IN exact path (line 1); OUT never set" in report.summary()
+    assert check_translation("grblhal", "gsk", GRBL_ON_A_LATHE, LATHE, False) == "warned: lathe path control"
+
+
+def test_a_path_control_difference_nobody_warned_of_is_a_defect() -> None:
+    message = ("translated, but verify says: max deviation 0.0000 mm over 2 moves (IN:1 / OUT:1): settings that "
+               "move the tool differ (listed below; --allow-ignored accepts them)\nnot compared:\n"
+               "  path control differs: IN exact path (line 2); OUT never set\nG21 G00 X0. Z10.\n")
+    warned = "t.nc:2:1: warning: ... a gsk lathe has no path control code here [?]: not written"
+    assert warned_difference(message, [warned]) == "lathe path control"
+    assert warned_difference(message, ["t.nc:1:1: warning: something else"]) is None
+    assert warned_difference(message, []) is None
+    other = message.replace("  path control differs", "  work offset differs")
+    assert warned_difference(other, [warned]) is None
