@@ -12,7 +12,7 @@ from postproc.errors import Diagnostics, ErrorList
 from postproc.setup.machine_setup import InputSettings, MachineSettings, MachineSetup
 from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
-from tests.support.fuzzing import check_translation, warned_difference
+from tests.support.fuzzing import check_translation, known_defect, warned_difference
 from tests.support.generators.grblhal_targets import check as grblhal_check
 from tests.support.generators.macros import as_rs274_prints
 from tests.support.rs274 import available as rs274_available, canonical_moves, run_rs274
@@ -562,3 +562,17 @@ def test_a_path_control_difference_nobody_warned_of_is_a_defect() -> None:
     assert warned_difference(message, []) is None
     other = message.replace("  path control differs", "  work offset differs")
     assert warned_difference(other, [warned]) is None
+
+
+def test_a_machine_move_under_incremental_distance_of_unknown_meaning_is_kept_by_a_copy_and_refused_elsewhere() -> None:
+    """make fuzz (mach3-mach3): Mach3's G53 under G91 is kept verbatim [?] (``MACHINE_MOVE_INCREMENTAL``), so
+    the copy's verify cannot simulate either side: listed as a known defect; another target refuses it, located."""
+    program = HEAD + "G53 G91 Y2.5\n"
+    with pytest.raises(AssertionError) as exc:
+        check_translation("mach3", "mach3", program, with_tools(MachineSetup()), False)
+    assert known_defect("mach3", str(exc.value)) is not None
+    with pytest.raises(ErrorList) as refused:
+        translate(io.StringIO(program), io.StringIO(), file="t.nc", source="mach3", target="linuxcnc")
+    assert [str(e) for e in refused.value.errors] == [
+        "t.nc:2:1: error: G53 in incremental distance mode (machine positions, increments or ignored: not known for "
+        "this controller [?]) from mach3 has no equivalent in linuxcnc"]
