@@ -12,6 +12,7 @@ from postproc.errors import Diagnostics, ErrorList
 from postproc.setup.machine_setup import InputSettings, MachineSettings, MachineSetup
 from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
+from tests.support.fuzzing import check_translation, known_defect, warned_difference
 from tests.support.generators.grblhal_targets import check as grblhal_check
 from tests.support.generators.macros import as_rs274_prints
 from tests.support.rs274 import available as rs274_available, canonical_moves, run_rs274
@@ -510,3 +511,68 @@ def test_a_gsk_program_for_grblhal_on_a_mill_set_up_is_checked_in_lathe_mode() -
     translate(io.StringIO(program), out, file="o0102.nc", source="gsk", target="grblhal", setup=with_tools(),
               diagnostics=Diagnostics(warn_stream=io.StringIO()))
     assert "G18 G7" in out.getvalue()
+
+
+def test_an_isg_program_header_inside_the_program_is_a_comment_for_linuxcnc_normalized() -> None:
+    """make fuzz (pairs, isg-linuxcnc, --normalize): an ISG program header after the first line ("% G87", a
+    program named G87) was copied as read, "% G87", which rs274 refuses ("Bad character '%' used": a '%' line
+    is only the file's first or last) [V: rs274 2.9]. It is the name as a comment, as without --normalize."""
+    program = "G90 G0 X0. Y0. Z10.\nG1 X1 F10\n% G87\nX3\nM30\n"
+    setup = MachineSetup()
+    written = []
+    for normalize in (False, True):
+        setup.output.normalize = normalize
+        out = io.StringIO()
+        translate(io.StringIO(program), out, file="t.nc", source="isg", target="linuxcnc", setup=setup)
+        written.append(out.getvalue())
+    assert written[1] == written[0] == "G21 G90 G0 X0. Y0. Z10.\nG1 X1. F10.\n(G87)\nG1 X3.\nM30\n"
+    if rs274_available():
+        run_rs274(written[1])  # raises where rs274 refuses the program
+
+
+LATHE = with_tools(MachineSetup(input=InputSettings(machine_type="lathe"), machine=MachineSettings(axes="XZ")))
+GRBL_ON_A_LATHE = "G21 G0 X0 Z10\nG1 X1 F100\n"
+
+
+def test_the_power_on_exact_path_for_a_lathe_without_path_codes_is_warned_of_and_listed_by_verify() -> None:
+    """make fuzz (new words, grblhal-gsk, lathe set-up): grblHAL runs in the exact path from power-on [V: grbl
+    gcode.h]; a GSK lathe has no path control code [?] (``postproc.lowering.path_at_start``): not written, with a
+    warning, and verify lists the difference. The fuzz took that for a defect; it is one the translation warned
+    of, as the lathe tool offset a mill control cannot apply."""
+    out = io.StringIO()
+    warnings = io.StringIO()
+    translate(io.StringIO(GRBL_ON_A_LATHE), out, file="t.nc", source="grblhal", target="gsk", setup=LATHE,
+              diagnostics=Diagnostics(warn_stream=warnings))
+    assert out.getvalue() == "G21 G00 X0. Z10.\nG01 X1. F100.\n"
+    assert "t.nc:1:1: warning: the grblhal controller runs this program in the exact path mode from power-on; a " \
+           "gsk lathe has no path control code here [?]" in warnings.getvalue()
+    report = verify_lines(io.StringIO(GRBL_ON_A_LATHE), io.StringIO(out.getvalue()), file_in="in.nc",
+                          file_out="out.nc", source="grblhal", target="gsk", setup=LATHE, tolerance=0.0)
+    assert not report.ok and "path control differs: IN exact path (line 1); OUT never set" in report.summary()
+    assert check_translation("grblhal", "gsk", GRBL_ON_A_LATHE, LATHE, False) == "warned: lathe path control"
+
+
+def test_a_path_control_difference_nobody_warned_of_is_a_defect() -> None:
+    message = ("translated, but verify says: max deviation 0.0000 mm over 2 moves (IN:1 / OUT:1): settings that "
+               "move the tool differ (listed below; --allow-ignored accepts them)\nnot compared:\n"
+               "  path control differs: IN exact path (line 2); OUT never set\nG21 G00 X0. Z10.\n")
+    warned = "t.nc:2:1: warning: ... a gsk lathe has no path control code here [?]: not written"
+    assert warned_difference(message, [warned]) == "lathe path control"
+    assert warned_difference(message, ["t.nc:1:1: warning: something else"]) is None
+    assert warned_difference(message, []) is None
+    other = message.replace("  path control differs", "  work offset differs")
+    assert warned_difference(other, [warned]) is None
+
+
+def test_a_machine_move_under_incremental_distance_of_unknown_meaning_is_kept_by_a_copy_and_refused_elsewhere() -> None:
+    """make fuzz (mach3-mach3): Mach3's G53 under G91 is kept verbatim [?] (``MACHINE_MOVE_INCREMENTAL``), so
+    the copy's verify cannot simulate either side: listed as a known defect; another target refuses it, located."""
+    program = HEAD + "G53 G91 Y2.5\n"
+    with pytest.raises(AssertionError) as exc:
+        check_translation("mach3", "mach3", program, with_tools(MachineSetup()), False)
+    assert known_defect("mach3", str(exc.value)) is not None
+    with pytest.raises(ErrorList) as refused:
+        translate(io.StringIO(program), io.StringIO(), file="t.nc", source="mach3", target="linuxcnc")
+    assert [str(e) for e in refused.value.errors] == [
+        "t.nc:2:1: error: G53 in incremental distance mode (machine positions, increments or ignored: not known for "
+        "this controller [?]) from mach3 has no equivalent in linuxcnc"]

@@ -432,10 +432,14 @@ class LinuxcncWriter(WordWriter):
                     and not self._ended:
                 return self._lone_tape_mark(block)
             self._closed = self.opening is True  # a '%' after the opening one
-        if self.normalize and block.text is not None and not block.words and "ProgramStart" in sections:
+        if self.normalize and block.text is not None and not block.words and "ProgramStart" in sections \
+                and self.source_dialect == self.DIALECT:
             # A Fanuc-style program number (``O1``, the start of an ``M98`` subprogram) is read into its section
             # with no words, from which a normalized line is written: it was written as a comment ("nothing in
-            # this block has a meaning"), so the ``M98 P1`` before it found no subprogram, exit 0. As read.
+            # this block has a meaning"), so the ``M98 P1`` before it found no subprogram, exit 0. As read, from
+            # a LinuxCNC source only: another dialect's start is its own text (an ISG ``% NAME`` header, which
+            # rs274 refuses off the first line: "Bad character '%' used", found by make fuzz), so it is written
+            # as without --normalize (``program_start``).
             return block.text.strip() + (block.eol or "\n")
         text = super().structure_block(block)
         end = sections.get("ProgramControl")
