@@ -132,8 +132,8 @@ class LineFormat:
         block = self.block
         if block is not None and self.mode != "keep":
             if names_block_numbers(block):
-                self._error("block numbers cannot be rewritten in a program that names block numbers (a jump, "
-                            "a return to a block number, a lathe cycle's profile range): the numbers it names "
+                self._error("block numbers cannot be rewritten in a program that jumps to block numbers or "
+                            "names them (a return to one, a lathe cycle's profile range): the numbers it names "
                             "would change")
         number_first = self.mode == "all" or (self.mode == "tool-changes" and (
             self.template == "tool_change" or (block is not None and "ToolChange" in block.sections)))
