@@ -199,8 +199,8 @@ class WordWriter(MotionWords):
         if renumber:
             if names_block_numbers(block):
                 raise ProgramError("--renumber cannot renumber a program that jumps to block numbers or "
-                                   "names them (GOTO, M99 P, a G70-G73 profile's P and Q): the numbers it names "
-                                   "would change",
+                                   "names them (GOTO, a return to a block number, a lathe cycle's profile range): the "
+                                   "numbers it names would change",
                                    self.ctx.at(block))
         # A number as written that is already explicit and exact keeps its text (and skips a float round trip):
         # digits the user wrote are never rounded away by normalising. ``canonical_number`` is called
