@@ -99,3 +99,16 @@ def test_renumber_applies_in_every_dialect_and_keeps_the_motion(tmp_path: Path, 
                           file_out="out.nc", source="fanuc", target=target, setup=MachineSetup())
     assert report.ok, report.summary()
     assert report.max_deviation == 0.0
+
+
+def test_renumber_applies_between_dialects_in_a_batch(tmp_path: Path) -> None:
+    """The batch sets the option up on its own path (``commands.batch.work``): the same numbering."""
+    sources = [tmp_path / "a.nc", tmp_path / "b.nc"]
+    for source in sources:
+        source.write_text(PLAIN)
+    (tmp_path / "out").mkdir()
+    assert main(["translate", *map(str, sources), "--from", "fanuc", "--to", "grbl", "--renumber", "100,5",
+                 "-o", str(tmp_path / "out") + "/"]) == 0
+    for source in sources:
+        written = (tmp_path / "out" / source.name).read_text()
+        assert [line.split()[0] for line in written.splitlines()[1:4]] == ["N100", "N105", "N110"]
