@@ -113,9 +113,8 @@ def _translate_one(args: argparse.Namespace, renumber: tuple[int, int | None] | 
             raise UsageError(f"--program-number: the {args.target} dialect writes no program number")
         setup.output.program_number = args.program_number
     if renumber is not None:
-        setup.output.renumber_start, step = renumber
-        if step is not None:
-            setup.output.renumber_step = step
+        from .renumbering import apply_renumber
+        apply_renumber(setup.output, renumber, args.source, args.target)
     from ..lowering.sequences import parse_defines
     defines = parse_defines(args.define)
     with _open_program(path) as src:

@@ -32,9 +32,9 @@ from typing import TYPE_CHECKING, Callable
 
 from mypy_extensions import mypyc_attr
 
-from ..interp.control import CONTROL
 from ..errors import ConfigError, Location, ProgramError
 from ..ir import Block
+from .block_references import names_block_numbers
 
 if TYPE_CHECKING:
     from ..context import Context
@@ -131,10 +131,10 @@ class LineFormat:
         rule = self.rule
         block = self.block
         if block is not None and self.mode != "keep":
-            control = block.sections.get(CONTROL)
-            if control is not None and getattr(control, "target", None) is not None:
-                self._error("block numbers cannot be rewritten in a program that jumps to block numbers (GOTO, "
-                            "a return to a block number): the numbers it names would change")
+            if names_block_numbers(block):
+                self._error("block numbers cannot be rewritten in a program that jumps to block numbers or "
+                            "names them (a return to one, a lathe cycle's profile range): the numbers it names "
+                            "would change")
         number_first = self.mode == "all" or (self.mode == "tool-changes" and (
             self.template == "tool_change" or (block is not None and "ToolChange" in block.sections)))
         out: list[str] = []

@@ -27,6 +27,7 @@ from ..ir.event_order import after_motion
 from ..ir.expr import Expr
 from ..ir import Block, CompoundMotion, Dwell, Feed, Motion, Section, one_line
 from ..numbers import MAX_PLACES, canonical_number
+from ..output.block_references import names_block_numbers
 from ..ir.state import changes_nothing
 from .motion_words import MotionWords
 from .word_numbers import _position
@@ -196,10 +197,10 @@ class WordWriter(MotionWords):
             parts.append("/" if skip.level == 1 else f"/{skip.level}")  # type: ignore[attr-defined]
         renumber = self.renumber
         if renumber:
-            control = sections.get(CONTROL)
-            if control is not None and getattr(control, "target", None) is not None:
-                raise ProgramError("--renumber cannot renumber a program that jumps to block numbers (GOTO, "
-                                   "a return to a block number): the numbers it names would change",
+            if names_block_numbers(block):
+                raise ProgramError("--renumber cannot renumber a program that jumps to block numbers or "
+                                   "names them (GOTO, a return to a block number, a lathe cycle's profile range): the "
+                                   "numbers it names would change",
                                    self.ctx.at(block))
         # A number as written that is already explicit and exact keeps its text (and skips a float round trip):
         # digits the user wrote are never rounded away by normalising. ``canonical_number`` is called

@@ -178,10 +178,8 @@ def _setup(options: Options) -> MachineSetup:
     if options.normalize:  # as the single-file command does (its outputs and ours are the same bytes)
         setup.output.normalize = True
     if options.renumber:
-        start, step = options.renumber
-        setup.output.renumber_start = start
-        if step is not None:
-            setup.output.renumber_step = step
+        from ..renumbering import apply_renumber
+        apply_renumber(setup.output, options.renumber, options.source, options.target)
     return setup
 
 
