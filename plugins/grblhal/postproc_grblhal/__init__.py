@@ -175,9 +175,10 @@ class Grblhal(GrblFamily):
 
     @classmethod
     def writer_class(cls, ctx: Context) -> type[Writer] | None:
-        """``LATHE_WRITER`` for a lathe program (grblHAL's lathe mode), ``OWN_WRITER`` for a grblHAL program
+        """``LATHE_WRITER`` for a lathe program (grblHAL's lathe mode) and for a mill program on a lathe set-up
+        (its mode line says X is a radius, as the mill's X is: #20), ``OWN_WRITER`` for a grblHAL program
         (its copied blocks end a generated cycle: ``writer.GrblhalOwnWriter``), else ``WRITER``."""
-        if ctx.lathe:
+        if ctx.lathe or cls.reads_lathe(ctx.setup):
             return cls.LATHE_WRITER
         return cls.OWN_WRITER if ctx.dialect == cls.NAME else cls.WRITER
 

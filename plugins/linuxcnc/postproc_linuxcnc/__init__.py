@@ -162,8 +162,9 @@ class Linuxcnc(Dialect):
 
     @classmethod
     def writer_class(cls, ctx: Context) -> type[Writer] | None:
-        """``LATHE_WRITER`` for a lathe program, else ``WRITER``."""
-        return cls.LATHE_WRITER if ctx.lathe else cls.WRITER
+        """``LATHE_WRITER`` for a lathe program, and for a mill program on a set-up LinuxCNC reads as a lathe's
+        (its mode line says X is a radius, as the mill's X is: LinuxCNC's lathe may start in G7), else ``WRITER``."""
+        return cls.LATHE_WRITER if ctx.lathe or cls.reads_lathe(ctx.setup) else cls.WRITER
 
     @classmethod
     def context(cls, file: str, setup: MachineSetup, diagnostics: Diagnostics) -> Context:
