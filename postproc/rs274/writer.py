@@ -14,7 +14,7 @@ below it, one job each: ``word_numbers`` (numbers), ``section_words`` (every sec
 
 from __future__ import annotations
 
-from typing import Any, Callable, ClassVar, Final
+from typing import TYPE_CHECKING, Any, Callable, ClassVar, Final, Iterable, TextIO
 
 from mypy_extensions import mypyc_attr
 
@@ -22,7 +22,7 @@ from ..block_rules import per_rev_problem
 from ..context import Context
 from ..interp.control import ASSIGN, CONTROL
 from ..dialect import Dialect
-from ..errors import ProgramError, UnsupportedError
+from ..errors import Location, ProgramError, UnsupportedError
 from ..ir.event_order import after_motion
 from ..ir.expr import Expr
 from ..ir import Block, CompoundMotion, Dwell, Feed, Motion, Section, one_line
@@ -31,6 +31,9 @@ from ..output.block_references import names_block_numbers
 from ..ir.state import changes_nothing
 from .motion_words import MotionWords
 from .word_numbers import _position
+
+if TYPE_CHECKING:
+    from ..output.block_renumbering import Renumbering
 
 SECTION_ORDER = (
     "BlockDelete", "Sequence", "Assign", "Control", "MachineCoordinates", "PathControl", "Plane", "XProgramming", "Units", "DistanceMode",
@@ -100,7 +103,11 @@ class WordWriter(MotionWords):
         self.normalize = out.normalize or bool(renumber) or self.rounding
         """Renumbering and decimals per address rewrite the words, so they imply normalising."""
         self.renumber = renumber
+        self.renumber_start = renumber
         self.renumber_step = out.renumber_step
+        self.number_max = out.number_max
+        self.renumbering: Renumbering | None = None
+        """The first pass of a renumbering run (``write``): the number each block gets, its references'."""
         self.copy_ok = source_dialect == self.DIALECT and not self.normalize and not self.renumber
         """A block of the dialect itself is copied byte for byte."""
         self.section_writers = self.dispatch_table()
@@ -118,6 +125,43 @@ class WordWriter(MotionWords):
         self.move_lane: MoveLane | None = None
         """A speed-only shortcut the run installed (``postproc.fast.expansion_moves``): ``compound`` offers it
         each move of an expansion first."""
+
+    def write(self, blocks: Iterable[Block], out: TextIO) -> None:
+        """Write every block; a renumbering run first numbers the whole program (``Renumbering``: its
+        references are written with their targets' new numbers), and is checked against that after."""
+        if not self.renumber or self.source_dialect != self.DIALECT:  # (between two: ``LineFormat`` numbers)
+            super().write(blocks, out)
+            return
+        from ..output.block_renumbering import Renumbering
+        listed = list(blocks)
+        self.renumbering = Renumbering(listed, self.renumber, self.renumber_step, self.number_max, self.takes_number)
+        super().write(listed, out)
+        for error in self.renumbering.check(self.ctx.at):
+            self.ctx.diagnostics.error(error)
+
+    def takes_number(self, block: Block) -> bool:
+        """A renumbering run numbers this block (``normalized`` does: a line of the dialect with words that
+        opens no program)."""
+        return block.text is not None and bool(block.words) and "ProgramStart" not in block.sections
+
+    def renumbering_pass(self) -> "Renumbering":
+        renumbering = self.renumbering
+        if renumbering is None:  # (``normalized`` called without ``write``: a numbering of no references)
+            from ..output.block_renumbering import Renumbering
+            renumbering = self.renumbering = Renumbering([], self.renumber, self.renumber_step, self.number_max,
+                                                         self.takes_number)
+        return renumbering
+
+    def profile_letters(self, cycle: Section) -> dict[str, str]:
+        """A lathe cycle's letter of each parameter that names a block of its profile (``P`` ``ns``, ``Q`` ``nf``)."""
+        from .lathe_words import ONE_WORDS, SECOND_WORDS
+        table = ONE_WORDS if getattr(cycle, "form", "") == "one" else SECOND_WORDS
+        words = table.get(getattr(cycle, "kind", ""), {})
+        return {param: letter for letter, (param, _) in words.items() if param in ("ns", "nf")}
+
+    def _word_at(self, block: Block, letter: str | None) -> Location:
+        ctx = self.ctx
+        return ctx.at(block) if letter is None else ctx.at(block, ctx.column_of(block, letter))
 
     def write_block(self, block: Block) -> str | None:
         """The text of a block: a block with a ``STRUCTURE`` section as ``structure_block`` writes it, any
@@ -196,12 +240,12 @@ class WordWriter(MotionWords):
         if skip is not None:
             parts.append("/" if skip.level == 1 else f"/{skip.level}")  # type: ignore[attr-defined]
         renumber = self.renumber
+        source_block = block
         if renumber:
-            if names_block_numbers(block):
-                raise ProgramError("--renumber cannot renumber a program that jumps to block numbers or "
-                                   "names them (GOTO, a return to a block number, a lathe cycle's profile range): the "
-                                   "numbers it names would change",
-                                   self.ctx.at(block))
+            if names_block_numbers(block):  # every reference written with its target's new number (or refused)
+                block = self.renumbering_pass().rewritten(block, self._word_at, self.profile_letters)
+                values = block.values
+                sections = block.sections
         # A number as written that is already explicit and exact keeps its text (and skips a float round trip):
         # digits the user wrote are never rounded away by normalising. ``canonical_number`` is called
         # directly: a bound method of a plugin's (interpreted) writer was a Python call a word (~2k instructions).
@@ -229,7 +273,9 @@ class WordWriter(MotionWords):
                                    f"largest the {self.DIALECT} controller takes (it refuses the line): start or step "
                                    f"lower", self.ctx.at(block))
             parts.insert(1 if skip is not None else 0, f"N{renumber}")
-            self.renumber = renumber + self.renumber_step
+            self.renumbering_pass().numbered(source_block, renumber)
+            following = renumber + self.renumber_step
+            self.renumber = following if following <= self.number_max else self.renumber_start  # (numberMax wraps)
         if ASSIGN in sections or CONTROL in sections:
             at = 1 if skip is not None else 0
             if len(parts) > at and parts[at][:1] == "N":

@@ -1,0 +1,183 @@
+"""``--renumber`` in a program's own dialect: an exact old -> new mapping of its block numbers.
+
+The writer numbers the blocks it normalises (``WordWriter.normalized``), one after the other. A word that
+names a block by its number (``GOTO n``, ``IF [..] GOTO n``, ``M99 P n``, a lathe cycle's profile range
+``P ns Q nf``) must name the same block after, so the renumbering runs in two passes: ``Renumbering``
+first goes over the whole program (the writer lists it: a renumbering run holds the program in memory) and
+gives each block the number the writer will write on it, then the writer writes every literal reference
+with its target's new number (``rewritten``). After the run, ``check`` holds the writer to that first pass:
+a target written with another number than the one its references got (a dialect that keeps such a line
+as written) refuses the reference, located.
+
+What cannot be rewritten exactly is refused, located at the reference:
+
+* a computed target (``GOTO #1``, ``GOTO [#1+10]``, ``M99 P#2``): its value is only known when it runs;
+* a number no block of the program carries (Fanuc would alarm), or one that only a block the writer does
+  not number carries (it keeps its number, another block may get the same one);
+* a number on several blocks of the program (a jump's or a profile's: of its own program, between
+  ``ProgramStart`` blocks; a return's: of the whole file, since the caller is not known here). Fanuc
+  searches a jump's number forward from the jump, then from the program start [K: ``interp.control.Goto``,
+  the Custom Macro B search as the interpreter runs it; not re-read in a manual here], so which block a
+  repeated number names depends on where the jump stands; the renumbering gives the two blocks two
+  numbers and the reference can only name one: refused rather than guessed;
+* a new number that the program writes on more than one block (``numberMax`` wrapped the numbering back
+  to its start onto a target's number, or a block the writer does not number keeps that number).
+
+A program number (Fanuc ``M98 P``, ``G65 P``) names a program, not a block: it is not rewritten.
+"""
+
+from __future__ import annotations
+
+from typing import Callable
+
+from ..errors import Location, ProgramError
+from ..interp.control import CONTROL, Goto, Return
+from ..ir import Block, Section
+from ..ir.expr import Expr, Num
+from .block_references import PROFILE_RANGE, names_block_numbers
+
+PROGRAM_START = "ProgramStart"
+"""The section that opens a program (a main program's or a subprogram's number): a jump's scope."""
+
+
+class Renumbering:
+    """The first pass of one renumbering run: the number each block will carry, and the references'."""
+
+    def __init__(self, blocks: list[Block], start: int, step: int, number_max: int,
+                 takes_number: Callable[[Block], bool]) -> None:
+        """``takes_number``: the writer numbers this block (the rule its ``normalized`` follows)."""
+        self.blocks = blocks
+        """The program, kept so every block's ``id`` names it until the run ends."""
+        self.new: dict[int, int] = {}
+        """``id`` of a block -> the number the writer will write on it."""
+        self.scope_of: dict[int, int] = {}
+        """``id`` of a block -> the program it is in (counted by its ``ProgramStart`` blocks)."""
+        self.by_old: dict[tuple[int, int], list[Block]] = {}
+        """(program, old number) -> the blocks that carried it, in order."""
+        self.by_old_anywhere: dict[int, list[Block]] = {}
+        """Old number -> the blocks that carried it, anywhere in the file."""
+        self.written_numbers: dict[tuple[int, int], int] = {}
+        """(program, number) -> how many blocks will carry it after the renumbering (the writer's numbers and
+        the old numbers of the blocks it does not number, which may keep them)."""
+        self.actual: dict[int, int] = {}
+        """``id`` of a block -> the number the writer did write on it (second pass)."""
+        self.references: list[tuple[Block, Block, int]] = []
+        """(referencing block, target block, the number written for it): checked after the run."""
+        self.rewritten_ids: set[int] = set()
+        """The referencing blocks the writer wrote through ``rewritten`` (or that it refused)."""
+        scope = 0
+        number = start
+        for block in blocks:
+            sections = block.sections
+            if PROGRAM_START in sections:
+                scope += 1
+            key = id(block)
+            self.scope_of[key] = scope
+            sequence = sections.get("Sequence")
+            old = getattr(sequence, "number", None) if sequence is not None else None
+            if isinstance(old, int):
+                self.by_old.setdefault((scope, old), []).append(block)
+                self.by_old_anywhere.setdefault(old, []).append(block)
+            if takes_number(block):
+                self.new[key] = number
+                mark = (scope, number)
+                number += step
+                if number > number_max:
+                    number = start
+            elif isinstance(old, int):
+                mark = (scope, old)
+            else:
+                continue
+            self.written_numbers[mark] = self.written_numbers.get(mark, 0) + 1
+
+    def rewritten(self, block: Block, at: Callable[[Block, str | None], Location],
+                  profile_letters: Callable[[Section], dict[str, str]]) -> Block:
+        """``block`` with every block number it names replaced by its target's new number (a copy; the
+        block itself is left as read). ``at``: where the block's word with that letter is (None: the
+        block's start); ``profile_letters``: a lathe cycle's letter of each profile parameter (``ns``,
+        ``nf``), the writer's family's spelling. Raises the located ``ProgramError`` of the first
+        reference that cannot be rewritten exactly."""
+        self.rewritten_ids.add(id(block))  # (written through here: refused here, or rewritten)
+        sections = dict(block.sections)
+        replaced: dict[str, int] = {}
+        control = sections.get(CONTROL)
+        if isinstance(control, Goto):
+            new = self._target(block, control.target, False, at(block, None), "the jump's target")
+            sections[CONTROL] = Goto(Num(float(new)), control.cond, control.fallthrough)
+        elif isinstance(control, Return) and control.target is not None:
+            new = self._target(block, control.target, True, at(block, None), "the return's block number")
+            sections[CONTROL] = Return(control.name, control.value, Num(float(new)))
+        elif control is not None and getattr(control, "target", None) is not None:
+            raise ProgramError(f"--renumber cannot rewrite the block number a {type(control).__name__} names",
+                               at(block, None))
+        cycle = sections.get("LatheCycle")
+        params = getattr(cycle, "params", None)
+        if cycle is not None and isinstance(params, dict) and any(name in params for name in PROFILE_RANGE):
+            letters = profile_letters(cycle)
+            for name in PROFILE_RANGE:
+                if name not in params:
+                    continue
+                letter = letters.get(name)
+                if letter is None:
+                    raise ProgramError(f"--renumber cannot tell which word of the cycle names its profile's "
+                                       f"{'first' if name == 'ns' else 'last'} block", at(block, None))
+                value = block.values.get(letter, params[name])
+                where = at(block, letter)
+                replaced[letter] = self._target(block, value, False, where,
+                                                f"the profile's {'first' if name == 'ns' else 'last'} block")
+        copy = Block(block.line, block.text, block.eol,
+                     [(letter, str(replaced[letter.upper()]) if letter.upper() in replaced else num)
+                      for letter, num in block.words])
+        copy.values = dict(block.values)
+        for letter, new in replaced.items():
+            copy.values[letter] = new
+        copy.sections = sections
+        return copy
+
+    def _target(self, block: Block, value: object, anywhere: bool, where: Location, what: str) -> int:
+        """The new number of the block that ``value`` (a reference of ``block``) names."""
+        if isinstance(value, Num):
+            value = value.value
+        if isinstance(value, Expr) or not isinstance(value, (int, float)):
+            raise ProgramError(f"--renumber cannot rewrite a computed block number ({what} is only known when the "
+                               f"program runs): write it as a number, or renumber without it", where)
+        if value != int(value):
+            raise ProgramError(f"--renumber: {what} N{value} is no block number", where)
+        old = int(value)
+        scope = self.scope_of.get(id(block), 0)
+        found = self.by_old_anywhere.get(old, []) if anywhere else self.by_old.get((scope, old), [])
+        if not found:
+            raise ProgramError(f"--renumber cannot rewrite {what} N{old}: no block of the "
+                               f"{'file' if anywhere else 'program'} carries that number", where)
+        if len(found) > 1:
+            lines = ", ".join(str(target.line) for target in found[:4])
+            raise ProgramError(f"--renumber cannot rewrite {what} N{old}: the number is on several blocks (lines "
+                               f"{lines}) and the renumbering would give each its own", where)
+        target = found[0]
+        new = self.new.get(id(target))
+        if new is None:
+            raise ProgramError(f"--renumber cannot rewrite {what} N{old}: its block (line {target.line}) is not "
+                               f"renumbered and keeps its number", where)
+        if self.written_numbers.get((self.scope_of.get(id(target), 0), new), 0) > 1:
+            raise ProgramError(f"--renumber cannot rewrite {what} N{old}: its new number N{new} would be on several "
+                               f"blocks (the numbering wraps at numberMax, or a block keeps its own number)", where)
+        self.references.append((block, target, new))
+        return new
+
+    def numbered(self, block: Block, number: int) -> None:
+        """The writer wrote ``number`` on ``block`` (second pass)."""
+        self.actual[id(block)] = number
+
+    def check(self, at: Callable[[Block], Location]) -> list[ProgramError]:
+        """After the run: a reference whose target was written with another number than the one it got, and a
+        block that names block numbers and was not written through ``rewritten`` (its line kept as written)."""
+        errors: list[ProgramError] = []
+        for block in self.blocks:
+            if names_block_numbers(block) and id(block) not in self.rewritten_ids:
+                errors.append(ProgramError("--renumber cannot rewrite the block numbers this line names: the "
+                                           "writer keeps it as written", at(block)))
+        for block, target, new in self.references:
+            if self.actual.get(id(target)) != new:
+                errors.append(ProgramError(f"--renumber cannot rewrite a reference to line {target.line}: that block "
+                                           f"is not written with N{new}", at(block)))
+        return errors
