@@ -1,13 +1,16 @@
 """``--renumber`` and words that name block numbers (#20: wrong code with exit 0).
 
-Before: renumbering a Fanuc lathe program turned ``N10``/``N20`` into other numbers but left ``G71 P10 Q20``
-and ``G70 P10 Q20`` as written, so the cycles roughed and finished whatever blocks now carried N10..N20 (the
-set-up lines at the program's top). A GOTO, an ``IF [...] GOTO`` and an ``M99 P`` were refused already; a
-lathe cycle's profile range now is too, by the writer's renumbering and by ``<Output blockNumbers>`` alike.
-Refused rather than rewritten: the cycle names blocks that follow it (their new numbers are not known when it
-is written) and a computed target (``GOTO #1``) cannot be mapped at all; a refusal is exact, a partial rewrite
-would not be. Also before: ``--renumber`` between two dialects was ignored with exit 0; it now numbers the
-written lines (``blockNumbers="all"``), and the renumbered program moves as its source (``verify``)."""
+Before leftovers8: renumbering a Fanuc lathe program turned ``N10``/``N20`` into other numbers but left
+``G71 P10 Q20`` and ``G70 P10 Q20`` as written, so the cycles roughed and finished whatever blocks now carried
+N10..N20. leftovers8 refused such a program (and a GOTO, an ``IF [...] GOTO``, an ``M99 P``). Now, in the
+program's own dialect, the renumbering is an exact old -> new mapping (``postproc.output.block_renumbering``):
+every literal reference is written with its target's new number, checked by golden files (checked by hand,
+``tests/golden/renumber/README.md``), by ``verify`` (the renumbered program moves as its source, move for move,
+loops and returns included) and by random programs; what cannot be rewritten exactly (a computed target, a
+missing or repeated number, a numbering that wraps onto a target's number) is refused, located.
+``<Output blockNumbers>`` (numbering the written lines) still refuses a program that names block numbers.
+Also: ``--renumber`` between two dialects numbers the written lines (``blockNumbers="all"``), and so does a
+set-up's ``renumberStart`` alone between two dialects (before: ignored, exit 0)."""
 
 from __future__ import annotations
 
@@ -42,13 +45,52 @@ def _translate(program: str, setup: MachineSetup, source: str = "fanuc", target:
     return out.getvalue()
 
 
-def test_renumbering_a_lathe_cycle_profile_is_refused_at_the_cycle() -> None:
-    with pytest.raises(ErrorList) as caught:
-        _translate(LATHE_PROGRAM, _lathe(renumber_start=10, renumber_step=10))
-    errors = str(caught.value).splitlines()
-    assert errors[0].startswith("t.nc:6:1: error: --renumber cannot renumber a program that jumps to block "
-                                "numbers or names them")
-    assert any(line.startswith("t.nc:11:1: error: --renumber") for line in errors)  # the G70 too
+GOLDEN = Path(__file__).parent / "golden" / "renumber"
+CASES = sorted(p for p in GOLDEN.glob("*.nc") if ".expected." not in p.name)
+
+
+def _setup_for(case: Path, **output: int | str) -> MachineSetup:
+    return _lathe(**output) if case.name.startswith("lathe_") else MachineSetup(
+        output=OutputSettings(**output))  # type: ignore[arg-type]
+
+
+def _verified(source: str, written: str, setup: MachineSetup) -> None:
+    """``written`` moves the tool as ``source``, move for move (a flattened run of each: loops and returns)."""
+    report = verify_lines(source.splitlines(keepends=True), written.splitlines(keepends=True), file_in="in.nc",
+                          file_out="out.nc", source="fanuc", target="fanuc", setup=setup)
+    assert report.ok, report.summary()
+    assert report.max_deviation == 0.0
+
+
+@pytest.mark.parametrize("case", CASES, ids=[p.stem for p in CASES])
+def test_renumbering_rewrites_every_reference_as_checked_by_hand(case: Path) -> None:
+    source = case.read_text()
+    written = _translate(source, _setup_for(case, renumber_start=100, renumber_step=5))
+    assert written == case.with_name(case.stem + ".expected.nc").read_text()
+    _verified(source, written, _setup_for(case))
+
+
+def test_the_goldens_cover_a_profile_a_loop_a_jump_and_a_return() -> None:
+    texts = "".join(case.read_text() for case in CASES)
+    for reference in ("G71 P", "G70 P", "IF [", "GOTO 30", "M99 P"):
+        assert reference in texts
+
+
+def test_verify_tells_a_reference_to_the_wrong_block() -> None:
+    """The check above can fail: the same output with the return one block off moves the tool elsewhere."""
+    case = GOLDEN / "return_to_block.nc"
+    written = case.with_name("return_to_block.expected.nc").read_text().replace("M99 P115", "M99 P120")
+    report = verify_lines(case.read_text().splitlines(keepends=True), written.splitlines(keepends=True),
+                          file_in="in.nc", file_out="out.nc", source="fanuc", target="fanuc", setup=MachineSetup())
+    assert not report.ok
+
+
+def test_the_lathe_cycles_follow_their_profile() -> None:
+    written = _translate(LATHE_PROGRAM, _lathe(renumber_start=10, renumber_step=10))
+    lines = written.splitlines()
+    assert lines[5] == "N50 G71 P60 Q90 U0.4 W0.1 F0.25" and lines[10] == "N100 G70 P60 Q90"
+    assert lines[6].startswith("N60 G0 X20.") and lines[9].startswith("N90 X52.")
+    _verified(LATHE_PROGRAM, written, _lathe())
 
 
 def test_numbering_the_lines_of_a_lathe_cycle_profile_is_refused() -> None:
@@ -61,18 +103,69 @@ def test_a_lathe_cycle_is_copied_with_its_numbers_when_nothing_renumbers() -> No
     assert _translate(LATHE_PROGRAM, _lathe()) == LATHE_PROGRAM
 
 
-@pytest.mark.parametrize("jump", ["GOTO 10", "IF [#1 LT 3] GOTO 10", "GOTO #2", "IF [#1 LT 3] GOTO [#2+10]"],
-                         ids=["goto", "if-goto", "computed-goto", "computed-if-goto"])
-def test_renumbering_a_jump_is_refused(jump: str) -> None:
+def test_a_profile_to_a_missing_block_is_refused_at_its_word() -> None:
+    program = LATHE_PROGRAM.replace("G70 P10 Q20", "G70 P10 Q25")
+    with pytest.raises(ErrorList, match=r"t\.nc:11:9: error: --renumber cannot rewrite the profile's last block "
+                                        r"N25: no block of the file carries that number"):
+        _translate(program, _lathe(renumber_start=10, renumber_step=10))
+
+
+@pytest.mark.parametrize("jump", ["GOTO #2", "IF [#1 LT 3] GOTO [#2+10]", "M99 P#2"],
+                         ids=["computed-goto", "computed-if-goto", "computed-return"])
+def test_renumbering_a_computed_target_is_refused(jump: str) -> None:
     program = MILL_HEAD + f"#1=0\n#2=10\nN10 #1=#1+1\n{jump}\nM30\n"
-    with pytest.raises(ErrorList, match=r"t\.nc:7:1: error: --renumber cannot renumber a program that jumps"):
+    with pytest.raises(ErrorList, match=r"t\.nc:7:1: error: --renumber cannot rewrite a computed block number"):
         _translate(program, MachineSetup(output=OutputSettings(renumber_start=100)))
 
 
-def test_renumbering_a_return_to_a_block_number_is_refused() -> None:
-    program = MILL_HEAD + "N10 G1 X1. F100.\nN20 G1 X2.\nM99 P10\n"
-    with pytest.raises(ErrorList, match=r"t\.nc:6:1: error: --renumber cannot renumber a program that jumps"):
+def test_a_jump_to_a_missing_block_is_refused() -> None:
+    program = MILL_HEAD + "N10 G1 X1. F100.\nGOTO 40\nM30\n"
+    with pytest.raises(ErrorList, match=r"t\.nc:5:1: error: --renumber cannot rewrite the jump's target N40: no "
+                                        r"block of the file carries that number"):
         _translate(program, MachineSetup(output=OutputSettings(renumber_start=100)))
+
+
+def test_a_jump_to_a_repeated_number_is_refused() -> None:
+    """Fanuc searches forward from the jump, then from the start: which N10 it reaches depends on where the
+    jump stands; the renumbering gives the two blocks two numbers, so the reference is refused, not guessed."""
+    program = MILL_HEAD + "#1=0\nN10 #1=#1+1\nN10 G1 X#1 F100.\nIF [#1 LT 3] GOTO 10\nM30\n"
+    with pytest.raises(ErrorList, match=r"t\.nc:7:1: error: --renumber cannot rewrite the jump's target N10: the "
+                                        r"number is on several blocks \(lines 5, 6\)"):
+        _translate(program, MachineSetup(output=OutputSettings(renumber_start=100)))
+
+
+def test_a_jump_to_a_number_a_subprogram_and_its_caller_both_carry_is_refused() -> None:
+    """Which of the two a controller reaches depends on whether it holds the subprogram as a program of its own
+    (this tool's simulator searches the whole file): refused, not guessed."""
+    program = (GOLDEN / "return_to_block.nc").read_text().replace("N70 #5", "N10 #5").replace("GOTO 70", "GOTO 10")
+    with pytest.raises(ErrorList, match=r":14:1: error: --renumber cannot rewrite the jump's target N10: the number "
+                                        r"is on several blocks \(lines 4, 12\)"):
+        _translate(program, MachineSetup(output=OutputSettings(renumber_start=100)))
+
+
+def test_a_return_to_a_repeated_number_is_refused() -> None:
+    program = (GOLDEN / "return_to_block.nc").read_text().replace("N70 #5", "N50 #5").replace("GOTO 70", "GOTO 50")
+    with pytest.raises(ErrorList, match=r":17:1: error: --renumber cannot rewrite the return's block number N50: "
+                                        r"the number is on several blocks \(lines 7, 12\)"):
+        _translate(program, MachineSetup(output=OutputSettings(renumber_start=100)))
+
+
+def test_a_numbering_that_wraps_onto_a_target_is_refused() -> None:
+    """``numberMax`` 20 from 10 by 5: N10 N15 N20 N10 ...; the target's N10 is then on two blocks."""
+    program = "O1000\nN1 G0 X0. Y0. Z5.\nN2 G1 X1. F100.\nN3 G1 X2.\nN4 G1 X3.\nGOTO 1\nM30\n"
+    setup = MachineSetup(output=OutputSettings(renumber_start=10, renumber_step=5, number_max=20))
+    with pytest.raises(ErrorList, match=r"t\.nc:6:1: error: --renumber cannot rewrite the jump's target N1: its new "
+                                        r"number N10 would be on several blocks"):
+        _translate(program, setup)
+    written = _translate(program.replace("GOTO 1", "GOTO 3"), setup)  # N3 -> N20: on one block only
+    assert written.splitlines()[1:6] == ["N10 G0 X0. Y0. Z5.", "N15 G1 X1. F100.", "N20 G1 X2.", "N10 G1 X3.",
+                                         "GOTO 20"]
+
+
+def test_a_program_number_is_not_a_block_number() -> None:
+    """``M98 P2000`` names a program: it stays as written while every block number changes."""
+    written = (GOLDEN / "return_to_block.expected.nc").read_text()
+    assert "M98 P2000" in written and "O2000" in written
 
 
 PLAIN = MILL_HEAD + "N5 G1 X10. Y5. F300.\nG2 X20. Y5. R5.\n(a comment)\nN99 G0 Z50.\nM30\n"

@@ -14,12 +14,13 @@ What cannot be rewritten exactly is refused, located at the reference:
 * a computed target (``GOTO #1``, ``GOTO [#1+10]``, ``M99 P#2``): its value is only known when it runs;
 * a number no block of the program carries (Fanuc would alarm), or one that only a block the writer does
   not number carries (it keeps its number, another block may get the same one);
-* a number on several blocks of the program (a jump's or a profile's: of its own program, between
-  ``ProgramStart`` blocks; a return's: of the whole file, since the caller is not known here). Fanuc
-  searches a jump's number forward from the jump, then from the program start [K: ``interp.control.Goto``,
-  the Custom Macro B search as the interpreter runs it; not re-read in a manual here], so which block a
-  repeated number names depends on where the jump stands; the renumbering gives the two blocks two
-  numbers and the reference can only name one: refused rather than guessed;
+* a number on several blocks of the file (a subprogram's and the main program's included). Fanuc searches
+  a jump's number forward from the jump, then from the program start [K: ``interp.control.Goto``, the
+  Custom Macro B search as the interpreter runs it; not re-read in a manual here], so which block a
+  repeated number names depends on where the jump stands, and on whether the controller holds the file's
+  subprograms as programs of their own (this tool's simulator searches the whole file); a return's names
+  a block of a caller not known here. The renumbering gives the blocks different numbers and the reference
+  can only name one: refused rather than guessed;
 * a new number that the program writes on more than one block (``numberMax`` wrapped the numbering back
   to its start onto a target's number, or a block the writer does not number keeps that number).
 
@@ -36,10 +37,6 @@ from ..ir import Block, Section
 from ..ir.expr import Expr, Num
 from .block_references import PROFILE_RANGE, names_block_numbers
 
-PROGRAM_START = "ProgramStart"
-"""The section that opens a program (a main program's or a subprogram's number): a jump's scope."""
-
-
 class Renumbering:
     """The first pass of one renumbering run: the number each block will carry, and the references'."""
 
@@ -50,14 +47,10 @@ class Renumbering:
         """The program, kept so every block's ``id`` names it until the run ends."""
         self.new: dict[int, int] = {}
         """``id`` of a block -> the number the writer will write on it."""
-        self.scope_of: dict[int, int] = {}
-        """``id`` of a block -> the program it is in (counted by its ``ProgramStart`` blocks)."""
-        self.by_old: dict[tuple[int, int], list[Block]] = {}
-        """(program, old number) -> the blocks that carried it, in order."""
-        self.by_old_anywhere: dict[int, list[Block]] = {}
-        """Old number -> the blocks that carried it, anywhere in the file."""
-        self.written_numbers: dict[tuple[int, int], int] = {}
-        """(program, number) -> how many blocks will carry it after the renumbering (the writer's numbers and
+        self.by_old: dict[int, list[Block]] = {}
+        """Old number -> the blocks of the file that carried it, in order."""
+        self.written_numbers: dict[int, int] = {}
+        """Number -> how many blocks of the file will carry it after the renumbering (the writer's numbers, and
         the old numbers of the blocks it does not number, which may keep them)."""
         self.actual: dict[int, int] = {}
         """``id`` of a block -> the number the writer did write on it (second pass)."""
@@ -65,27 +58,19 @@ class Renumbering:
         """(referencing block, target block, the number written for it): checked after the run."""
         self.rewritten_ids: set[int] = set()
         """The referencing blocks the writer wrote through ``rewritten`` (or that it refused)."""
-        scope = 0
         number = start
         for block in blocks:
-            sections = block.sections
-            if PROGRAM_START in sections:
-                scope += 1
-            key = id(block)
-            self.scope_of[key] = scope
-            sequence = sections.get("Sequence")
+            sequence = block.sections.get("Sequence")
             old = getattr(sequence, "number", None) if sequence is not None else None
             if isinstance(old, int):
-                self.by_old.setdefault((scope, old), []).append(block)
-                self.by_old_anywhere.setdefault(old, []).append(block)
+                self.by_old.setdefault(old, []).append(block)
             if takes_number(block):
-                self.new[key] = number
-                mark = (scope, number)
+                self.new[id(block)] = mark = number
                 number += step
                 if number > number_max:
                     number = start
             elif isinstance(old, int):
-                mark = (scope, old)
+                mark = old
             else:
                 continue
             self.written_numbers[mark] = self.written_numbers.get(mark, 0) + 1
@@ -102,10 +87,10 @@ class Renumbering:
         replaced: dict[str, int] = {}
         control = sections.get(CONTROL)
         if isinstance(control, Goto):
-            new = self._target(block, control.target, False, at(block, None), "the jump's target")
+            new = self._target(block, control.target, at(block, None), "the jump's target")
             sections[CONTROL] = Goto(Num(float(new)), control.cond, control.fallthrough)
         elif isinstance(control, Return) and control.target is not None:
-            new = self._target(block, control.target, True, at(block, None), "the return's block number")
+            new = self._target(block, control.target, at(block, None), "the return's block number")
             sections[CONTROL] = Return(control.name, control.value, Num(float(new)))
         elif control is not None and getattr(control, "target", None) is not None:
             raise ProgramError(f"--renumber cannot rewrite the block number a {type(control).__name__} names",
@@ -123,7 +108,7 @@ class Renumbering:
                                        f"{'first' if name == 'ns' else 'last'} block", at(block, None))
                 value = block.values.get(letter, params[name])
                 where = at(block, letter)
-                replaced[letter] = self._target(block, value, False, where,
+                replaced[letter] = self._target(block, value, where,
                                                 f"the profile's {'first' if name == 'ns' else 'last'} block")
         copy = Block(block.line, block.text, block.eol,
                      [(letter, str(replaced[letter.upper()]) if letter.upper() in replaced else num)
@@ -134,7 +119,7 @@ class Renumbering:
         copy.sections = sections
         return copy
 
-    def _target(self, block: Block, value: object, anywhere: bool, where: Location, what: str) -> int:
+    def _target(self, block: Block, value: object, where: Location, what: str) -> int:
         """The new number of the block that ``value`` (a reference of ``block``) names."""
         if isinstance(value, Num):
             value = value.value
@@ -144,11 +129,10 @@ class Renumbering:
         if value != int(value):
             raise ProgramError(f"--renumber: {what} N{value} is no block number", where)
         old = int(value)
-        scope = self.scope_of.get(id(block), 0)
-        found = self.by_old_anywhere.get(old, []) if anywhere else self.by_old.get((scope, old), [])
+        found = self.by_old.get(old, [])
         if not found:
             raise ProgramError(f"--renumber cannot rewrite {what} N{old}: no block of the "
-                               f"{'file' if anywhere else 'program'} carries that number", where)
+                               f"file carries that number", where)
         if len(found) > 1:
             lines = ", ".join(str(target.line) for target in found[:4])
             raise ProgramError(f"--renumber cannot rewrite {what} N{old}: the number is on several blocks (lines "
@@ -158,7 +142,7 @@ class Renumbering:
         if new is None:
             raise ProgramError(f"--renumber cannot rewrite {what} N{old}: its block (line {target.line}) is not "
                                f"renumbered and keeps its number", where)
-        if self.written_numbers.get((self.scope_of.get(id(target), 0), new), 0) > 1:
+        if self.written_numbers.get(new, 0) > 1:
             raise ProgramError(f"--renumber cannot rewrite {what} N{old}: its new number N{new} would be on several "
                                f"blocks (the numbering wraps at numberMax, or a block keeps its own number)", where)
         self.references.append((block, target, new))
