@@ -19,6 +19,7 @@ import re
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings, strategies as st
 
 from postproc.api import translate
 from postproc.commands.cli import main
@@ -205,3 +206,60 @@ def test_renumber_applies_between_dialects_in_a_batch(tmp_path: Path) -> None:
     for source in sources:
         written = (tmp_path / "out" / source.name).read_text()
         assert [line.split()[0] for line in written.splitlines()[1:4]] == ["N100", "N105", "N110"]
+
+
+@st.composite
+def _programs(draw: st.DrawFn) -> tuple[str, int, int]:
+    """A mill program of numbered and unnumbered moves, counted loops (``IF [..] GOTO`` back to the loop's
+    head), forward ``GOTO``s over a part of it and, maybe, a subprogram returning with ``M99 P`` to a block of
+    the main program after its call; and a START, STEP that number it below ``numberMax``."""
+    units = draw(st.lists(st.sampled_from(["move", "numbered", "loop", "goto"]), min_size=2, max_size=8))
+    numbers = iter(draw(st.permutations(range(1, 200)))[:40])
+    lines: list[str] = []
+    later: list[int] = []  # the forward jumps waiting for a block to name: indexes into ``lines``
+    x = 0
+    for pos, unit in enumerate(units):
+        x += 1
+        if unit == "move":
+            lines.append(f"G1 X{x}. Y{draw(st.integers(0, 9))}. F100.")
+        elif unit == "numbered":
+            number = next(numbers)
+            lines.append(f"N{number} G1 X{x}. F100.")
+            for at in later:
+                lines[at] = lines[at].format(number)
+            later.clear()
+        elif unit == "loop":
+            head, var, count = next(numbers), 100 + pos, draw(st.integers(1, 3))
+            lines += [f"#{var}=0", f"N{head} #{var}=#{var}+1", f"G91 G1 X1. Y{draw(st.integers(-2, 2))}. F100.",
+                      "G90", f"IF [#{var} LT {count}] GOTO {head}"]
+        else:
+            later.append(len(lines))
+            lines += ["GOTO {}", f"G1 X{x}. Y7. F100."]  # (skipped by the jump)
+    if later:  # a block for the jumps still waiting
+        number = next(numbers)
+        lines.append(f"N{number} G0 Z6.")
+        for at in later:
+            lines[at] = lines[at].format(number)
+    body = "\n".join(lines)
+    program = MILL_HEAD + body + "\n"
+    if draw(st.booleans()):
+        back = next(numbers)
+        program = (MILL_HEAD + "M98 P2000\nG1 X-1. F100.\n" + f"N{back} G1 Y-1. F100.\n" + body
+                   + f"\nM30\nO2000\nG1 X-5. Y-5. F100.\nM99 P{back}\n")
+    else:
+        program += "M30\n"
+    start = draw(st.integers(1, 5000))
+    step = draw(st.integers(1, 50))
+    return program, start, step
+
+
+@given(_programs())
+@settings(max_examples=30)
+def test_random_programs_renumber_and_move_as_their_source(case: tuple[str, int, int]) -> None:
+    """Every reference of a random program follows its block: the renumbered program, run flattened (its loops
+    and return included), makes the source's moves; its numbers run from START by STEP."""
+    program, start, step = case
+    written = _translate(program, MachineSetup(output=OutputSettings(renumber_start=start, renumber_step=step)))
+    numbers = [int(m.group(1)) for line in written.splitlines() if (m := re.match(r"N(\d+) ", line))]
+    assert numbers == list(range(start, start + step * len(numbers), step))
+    _verified(program, written, MachineSetup())
