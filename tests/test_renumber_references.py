@@ -151,16 +151,14 @@ def test_a_return_to_a_repeated_number_is_refused() -> None:
         _translate(program, MachineSetup(output=OutputSettings(renumber_start=100)))
 
 
-def test_a_numbering_that_wraps_onto_a_target_is_refused() -> None:
-    """``numberMax`` 20 from 10 by 5: N10 N15 N20 N10 ...; the target's N10 is then on two blocks."""
+def test_renumbering_does_not_wrap_at_number_max() -> None:
+    """``--renumber`` has no maximum (``numberMax`` is ``blockNumbers``' wrap): no new number repeats, so none
+    lands on a target's (``numberMax`` 20 from 10 by 5 would give N10 N15 N20 N10: the GOTO 1 two blocks)."""
     program = "O1000\nN1 G0 X0. Y0. Z5.\nN2 G1 X1. F100.\nN3 G1 X2.\nN4 G1 X3.\nGOTO 1\nM30\n"
     setup = MachineSetup(output=OutputSettings(renumber_start=10, renumber_step=5, number_max=20))
-    with pytest.raises(ErrorList, match=r"t\.nc:6:1: error: --renumber cannot rewrite the jump's target N1: its new "
-                                        r"number N10 would be on several blocks"):
-        _translate(program, setup)
-    written = _translate(program.replace("GOTO 1", "GOTO 3"), setup)  # N3 -> N20: on one block only
-    assert written.splitlines()[1:6] == ["N10 G0 X0. Y0. Z5.", "N15 G1 X1. F100.", "N20 G1 X2.", "N10 G1 X3.",
-                                         "GOTO 20"]
+    written = _translate(program, setup)
+    assert written.splitlines()[1:7] == ["N10 G0 X0. Y0. Z5.", "N15 G1 X1. F100.", "N20 G1 X2.", "N25 G1 X3.",
+                                         "GOTO 10", "N30 M30"]
 
 
 def test_a_program_number_is_not_a_block_number() -> None:

@@ -21,8 +21,10 @@ What cannot be rewritten exactly is refused, located at the reference:
   subprograms as programs of their own (this tool's simulator searches the whole file); a return's names
   a block of a caller not known here. The renumbering gives the blocks different numbers and the reference
   can only name one: refused rather than guessed;
-* a new number that the program writes on more than one block (``numberMax`` wrapped the numbering back
-  to its start onto a target's number, or a block the writer does not number keeps that number).
+* a new number that the program writes on more than one block (a block the writer does not number keeps
+  its own, which may be a target's new one). ``--renumber`` has no maximum and does not wrap at
+  ``numberMax`` (only ``<Output blockNumbers>``'s numbering of the written lines does, and it refuses every
+  program that names block numbers): no wrapped number can land on a target.
 
 A program number (Fanuc ``M98 P``, ``G65 P``) names a program, not a block: it is not rewritten.
 """
@@ -40,8 +42,7 @@ from .block_references import PROFILE_RANGE, names_block_numbers
 class Renumbering:
     """The first pass of one renumbering run: the number each block will carry, and the references'."""
 
-    def __init__(self, blocks: list[Block], start: int, step: int, number_max: int,
-                 takes_number: Callable[[Block], bool]) -> None:
+    def __init__(self, blocks: list[Block], start: int, step: int, takes_number: Callable[[Block], bool]) -> None:
         """``takes_number``: the writer numbers this block (the rule its ``normalized`` follows)."""
         self.blocks = blocks
         """The program, kept so every block's ``id`` names it until the run ends."""
@@ -67,8 +68,6 @@ class Renumbering:
             if takes_number(block):
                 self.new[id(block)] = mark = number
                 number += step
-                if number > number_max:
-                    number = start
             elif isinstance(old, int):
                 mark = old
             else:
@@ -144,7 +143,7 @@ class Renumbering:
                                f"renumbered and keeps its number", where)
         if self.written_numbers.get(new, 0) > 1:
             raise ProgramError(f"--renumber cannot rewrite {what} N{old}: its new number N{new} would be on several "
-                               f"blocks (the numbering wraps at numberMax, or a block keeps its own number)", where)
+                               f"blocks (a block that is not renumbered keeps that number)", where)
         self.references.append((block, target, new))
         return new
 

@@ -103,9 +103,7 @@ class WordWriter(MotionWords):
         self.normalize = out.normalize or bool(renumber) or self.rounding
         """Renumbering and decimals per address rewrite the words, so they imply normalising."""
         self.renumber = renumber
-        self.renumber_start = renumber
         self.renumber_step = out.renumber_step
-        self.number_max = out.number_max
         self.renumbering: Renumbering | None = None
         """The first pass of a renumbering run (``write``): the number each block gets, its references'."""
         self.copy_ok = source_dialect == self.DIALECT and not self.normalize and not self.renumber
@@ -134,7 +132,7 @@ class WordWriter(MotionWords):
             return
         from ..output.block_renumbering import Renumbering
         listed = list(blocks)
-        self.renumbering = Renumbering(listed, self.renumber, self.renumber_step, self.number_max, self.takes_number)
+        self.renumbering = Renumbering(listed, self.renumber, self.renumber_step, self.takes_number)
         super().write(listed, out)
         for error in self.renumbering.check(self.ctx.at):
             self.ctx.diagnostics.error(error)
@@ -148,8 +146,7 @@ class WordWriter(MotionWords):
         renumbering = self.renumbering
         if renumbering is None:  # (``normalized`` called without ``write``: a numbering of no references)
             from ..output.block_renumbering import Renumbering
-            renumbering = self.renumbering = Renumbering([], self.renumber, self.renumber_step, self.number_max,
-                                                         self.takes_number)
+            renumbering = self.renumbering = Renumbering([], self.renumber, self.renumber_step, self.takes_number)
         return renumbering
 
     def profile_letters(self, cycle: Section) -> dict[str, str]:
@@ -274,8 +271,7 @@ class WordWriter(MotionWords):
                                    f"lower", self.ctx.at(block))
             parts.insert(1 if skip is not None else 0, f"N{renumber}")
             self.renumbering_pass().numbered(source_block, renumber)
-            following = renumber + self.renumber_step
-            self.renumber = following if following <= self.number_max else self.renumber_start  # (numberMax wraps)
+            self.renumber = renumber + self.renumber_step
         if ASSIGN in sections or CONTROL in sections:
             at = 1 if skip is not None else 0
             if len(parts) > at and parts[at][:1] == "N":
