@@ -23,7 +23,7 @@ from hypothesis import given, settings, strategies as st
 
 from postproc.api import translate
 from postproc.commands.cli import main
-from postproc.errors import ErrorList
+from postproc.errors import Diagnostics, ErrorList
 from postproc.setup.machine_setup import InputSettings, MachineSettings, MachineSetup, OutputSettings
 from postproc.simulate.verify import verify_lines
 
@@ -261,3 +261,33 @@ def test_random_programs_renumber_and_move_as_their_source(case: tuple[str, int,
     numbers = [int(m.group(1)) for line in written.splitlines() if (m := re.match(r"N(\d+) ", line))]
     assert numbers == list(range(start, start + step * len(numbers), step))
     _verified(program, written, MachineSetup())
+
+
+@pytest.mark.parametrize("target", ["linuxcnc", "grbl"])
+def test_a_set_up_renumber_start_alone_numbers_the_lines_between_two_dialects(target: str) -> None:
+    """Before: ``<Output renumberStart="100">`` without ``blockNumbers`` was ignored between two dialects (the
+    writer numbers only the blocks it normalises: none there), exit 0. Now it numbers as ``--renumber`` does."""
+    setup = MachineSetup(output=OutputSettings(renumber_start=100, renumber_step=5))
+    written = _translate(PLAIN, setup, target=target)
+    assert written == _translate(PLAIN, MachineSetup(output=OutputSettings(
+        renumber_start=100, renumber_step=5, block_numbers="all")), target=target)
+    numbers = [int(m.group(1)) for line in written.splitlines() if (m := re.match(r"N(\d+) ", line))]
+    assert numbers[:3] == [100, 105, 110] and not re.search(r"\bN(5|99)\b", written)
+
+
+def test_a_set_up_renumber_start_alone_flattens_a_jump_between_two_dialects() -> None:
+    """The numbered lines cannot keep a jump to a number (``LineFormat`` refuses it), so a program the target
+    could keep symbolic (SINUMERIK ``GOTOF N30``) is flattened instead, with the usual warning, and moves as read."""
+    program = MILL_HEAD + "N10 G1 X1. F100.\nGOTO 30\nN20 G1 X2.\nN30 G1 X3.\nM30\n"
+    assert "GOTOF N30" in _translate(program, MachineSetup(), target="siemens")
+    setup = MachineSetup(output=OutputSettings(renumber_start=100, renumber_step=10))
+    out = io.StringIO()
+    warnings = io.StringIO()
+    translate(program.splitlines(keepends=True), out, file="t.nc", source="fanuc", target="siemens", setup=setup,
+              diagnostics=Diagnostics(warn_stream=warnings))
+    written = out.getvalue()
+    assert "GOTO" not in written.replace(";LINE 5: GOTO 30", "") and "N130 G1 X3." in written
+    assert "t.nc:5:1: warning: the program is flattened" in warnings.getvalue()
+    report = verify_lines(program.splitlines(keepends=True), written.splitlines(keepends=True), file_in="in.nc",
+                          file_out="out.nc", source="fanuc", target="siemens", setup=MachineSetup())
+    assert report.ok, report.summary()

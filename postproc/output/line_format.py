@@ -38,6 +38,7 @@ from .block_references import names_block_numbers
 
 if TYPE_CHECKING:
     from ..context import Context
+    from ..setup.groups import OutputSettings
 
 _NUMBER = re.compile(r"(/\d?\s*)?[Nn]\d+\s*")
 """A block number at the start of a line, after an optional block delete."""
@@ -69,19 +70,20 @@ class LineFormat:
     """One translation's line formatting, wrapped around the writer's ``emit``."""
 
     def __init__(self, ctx: "Context", target: str | None, lower_case: bool, rule: LineRule | None = None,
-                 max_number: int = 0) -> None:
+                 max_number: int = 0, between: bool = False) -> None:
         """``target``: the dialect written (None: the source's own); ``lower_case``: its reader takes
         lower-case addresses (the dialect's ``LOWER_CASE``); ``rule``: its ``LINE_RULE``; ``max_number``: the
-        largest block number it takes (0: any; ``Writer.MAX_BLOCK_NUMBER``)."""
+        largest block number it takes (0: any; ``Writer.MAX_BLOCK_NUMBER``); ``between``: the run translates
+        between two dialects (``renumberStart`` alone then numbers the lines: ``numbering``)."""
         out = ctx.setup.output
         self.rule = rule
         self.warned = False
         """The rule's warning has been given (once a run)."""
-        self.formats = not (out.block_numbers == "keep" and out.case == "keep" and out.line_ending == "keep"
+        self.mode = numbering(out, between)
+        self.formats = not (self.mode == "keep" and out.case == "keep" and out.line_ending == "keep"
                             and not out.max_line_length)
         """The set-up asks for a format (otherwise only the rule applies)."""
         self.ctx = ctx
-        self.mode = out.block_numbers
         self.start = out.renumber_start or out.renumber_step
         self.step = out.renumber_step
         self.max = out.number_max
@@ -104,12 +106,12 @@ class LineFormat:
 
     @classmethod
     def for_run(cls, ctx: "Context", target: str | None, lower_case: bool,
-                rule: LineRule | None = None, max_number: int = 0) -> "LineFormat | None":
+                rule: LineRule | None = None, max_number: int = 0, between: bool = False) -> "LineFormat | None":
         out = ctx.setup.output
         if (out.block_numbers == "keep" and out.case == "keep" and out.line_ending == "keep"
-                and not out.max_line_length and rule is None):
+                and not out.max_line_length and rule is None and not (between and out.renumber_start)):
             return None
-        return cls(ctx, target, lower_case, rule, max_number)
+        return cls(ctx, target, lower_case, rule, max_number, between)
 
     def wrap(self, emit: Callable[[str], object]) -> Callable[[str], object]:
         """``emit`` of each text as ``line`` has it."""
@@ -197,6 +199,15 @@ class LineFormat:
             return self.ctx.at(self.block)
         setup = self.ctx.setup
         return Location(setup.source or "<set-up>", setup.template_lines.get(self.template or "", 1), 1)
+
+
+def numbering(out: "OutputSettings", between: bool) -> str:
+    """The ``blockNumbers`` a run follows: the set-up's, and ``all`` for a ``renumberStart`` between two dialects
+    (``--renumber``'s meaning there, ``postproc.commands.renumbering``: the writer renumbers only the blocks it
+    normalises, which a translation between two dialects has none of, so the setting was ignored, exit 0)."""
+    if out.block_numbers == "keep" and out.renumber_start and between:
+        return "all"
+    return out.block_numbers
 
 
 def _recase(body: str, case: str) -> str:

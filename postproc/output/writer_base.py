@@ -146,7 +146,7 @@ class Writer(abc.ABC):
         target = self.target
         line_format = LineFormat.for_run(self.ctx, None if target is None else target.NAME,
                                          target is None or target.LOWER_CASE, getattr(target, "LINE_RULE", None),
-                                         self.MAX_BLOCK_NUMBER)
+                                         self.MAX_BLOCK_NUMBER, target is not None and target.NAME != self.source_dialect)
         emit = put if line_format is None else line_format.wrap(put)
         """A text formatted (``LineFormat.line``), to the output."""
         passes_below = lane.passes_below if lane is not None and line_format is not None and not line_format.formats \
