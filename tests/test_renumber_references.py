@@ -291,3 +291,14 @@ def test_a_set_up_renumber_start_alone_flattens_a_jump_between_two_dialects() ->
     report = verify_lines(program.splitlines(keepends=True), written.splitlines(keepends=True), file_in="in.nc",
                           file_out="out.nc", source="fanuc", target="siemens", setup=MachineSetup())
     assert report.ok, report.summary()
+
+
+def test_a_gsk_macro_jump_is_refused() -> None:
+    """``G65 H80 P30`` (kept verbatim: postproc runs no GSK macro) jumps to N30: renumbered, it would jump
+    elsewhere with exit 0 (before). Refused, located; another G65 operation (``H2``: addition) is renumbered."""
+    program = "O1000\nG0 X50. Z5.\nN10 G1 X40. F0.2\nG65 H80 P30\nN20 G1 X30.\nN30 G0 X60.\nM30\n"
+    with pytest.raises(ErrorList, match=r"t\.nc:4:1: error: --renumber cannot rewrite the block number G65 H80 names"):
+        _translate(program, _lathe(renumber_start=100), source="gsk", target="gsk")
+    written = _translate(program.replace("G65 H80 P30", "G65 H2 P#1 Q1"), _lathe(renumber_start=100),
+                         source="gsk", target="gsk")
+    assert "N120 G65 H2 P#1 Q1" in written

@@ -149,6 +149,11 @@ class WordWriter(MotionWords):
             renumbering = self.renumbering = Renumbering([], self.renumber, self.renumber_step, self.takes_number)
         return renumbering
 
+    def native_block_reference(self, block: Block) -> str | None:
+        """What in a block kept in the dialect's own words (``NativeCode``) names a block number, which a
+        renumbering cannot rewrite (None: nothing; the base knows of none)."""
+        return None
+
     def profile_letters(self, cycle: Section) -> dict[str, str]:
         """A lathe cycle's letter of each parameter that names a block of its profile (``P`` ``ns``, ``Q`` ``nf``)."""
         from .lathe_words import ONE_WORDS, SECOND_WORDS
@@ -239,6 +244,10 @@ class WordWriter(MotionWords):
         renumber = self.renumber
         source_block = block
         if renumber:
+            native = self.native_block_reference(block)
+            if native is not None:
+                raise ProgramError(f"--renumber cannot rewrite the block number {native} names (the line is kept as "
+                                   f"written): its target would change", self.ctx.at(block))
             if names_block_numbers(block):  # every reference written with its target's new number (or refused)
                 block = self.renumbering_pass().rewritten(block, self._word_at, self.profile_letters)
                 values = block.values
