@@ -2,10 +2,11 @@
 
 A renumbering gives every block a new number; a word that names a block by its number (a jump to it, a
 return to it in the caller, a lathe cycle's profile range from its first to its last block) would then
-name another block, or none, and the program would run other moves with no error. Both renumberings
-(``--renumber`` in the writer, ``blockNumbers`` in ``postproc.output.line_format``) refuse such a block,
-located, rather than write it: a rewrite of the references needs every target's new number before the
-reference is written (a lathe cycle names blocks that follow it), and a computed target cannot be mapped.
+name another block, or none, and the program would run other moves with no error. The writer's renumbering
+(``--renumber`` in the program's own dialect) rewrites such a block's literal references to their targets'
+new numbers (``postproc.output.block_renumbering``: it numbers the whole program before writing it) and
+refuses the rest, located; ``blockNumbers`` (``postproc.output.line_format``) numbers the lines after they
+are written, references included, and refuses such a block.
 """
 
 from __future__ import annotations

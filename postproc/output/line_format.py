@@ -13,7 +13,9 @@ emits with no step per block. Settings are read once per translation.
   before anything is written: ``numberMax`` is the set-up's statement of the largest number its controller
   takes, so wrapping elsewhere would be a numbering it did not ask for, and a program would fail or pass by
   its length. A program that jumps to block numbers cannot be
-  renumbered: its targets would change (a located error). Comment lines, ``%`` and program-number,
+  renumbered here: its targets would change (a located error; the writer's ``--renumber`` in the program's own
+  dialect rewrites them, ``postproc.output.block_renumbering``). Between two dialects a ``renumberStart`` alone
+  means ``all`` (``numbering``). Comment lines, ``%`` and program-number,
   O-word, ``$`` and label lines get no number.
 * ``case``: ``upper``, or ``lower`` where the target's reader accepts lower case (``LOWER_CASE``);
   comments keep their text.
