@@ -302,3 +302,33 @@ def test_a_gsk_macro_jump_is_refused() -> None:
     written = _translate(program.replace("G65 H80 P30", "G65 H2 P#1 Q1"), _lathe(renumber_start=100),
                          source="gsk", target="gsk")
     assert "N120 G65 H2 P#1 Q1" in written
+
+
+@st.composite
+def _lathe_programs(draw: st.DrawFn) -> tuple[str, int, int]:
+    """A G71 roughing and a G70 finishing cycle on a random profile (X rising, Z falling: a type I profile)
+    whose first and last blocks carry random numbers, among blocks numbered or not at random."""
+    numbers = iter(draw(st.permutations(range(1, 100)))[:30])
+
+    def numbered(text: str) -> str:
+        return f"N{next(numbers)} {text}" if draw(st.booleans()) else text
+
+    ns, nf = next(numbers), next(numbers)
+    steps = draw(st.integers(1, 4))
+    xs = sorted(draw(st.lists(st.integers(21, 50), min_size=steps, max_size=steps, unique=True)))
+    zs = sorted(draw(st.lists(st.integers(-40, -2), min_size=steps, max_size=steps, unique=True)), reverse=True)
+    profile = [f"N{ns} G0 X20."] + [numbered(f"G1 X{x}. Z{z}.") for x, z in zip(xs, zs)] + [f"N{nf} G1 X52."]
+    lines = ["O1000", numbered("G21 G18 G40 G97 G99"), numbered("T0101"), numbered("G0 X52. Z2. S1500 M3"),
+             numbered("G71 U2. R0.5"), numbered(f"G71 P{ns} Q{nf} U0.4 W0.1 F0.25"), *profile,
+             numbered(f"G70 P{ns} Q{nf}"), numbered("G0 X100. Z100."), "M30"]
+    return "\n".join(lines) + "\n", draw(st.integers(1, 5000)), draw(st.integers(1, 50))
+
+
+@given(_lathe_programs())
+@settings(max_examples=20)
+def test_random_lathe_profiles_renumber_and_move_as_their_source(case: tuple[str, int, int]) -> None:
+    program, start, step = case
+    written = _translate(program, _lathe(renumber_start=start, renumber_step=step))
+    numbers = [int(m.group(1)) for line in written.splitlines() if (m := re.match(r"N(\d+) ", line))]
+    assert numbers == list(range(start, start + step * len(numbers), step))
+    _verified(program, written, _lathe())
