@@ -332,3 +332,32 @@ def test_random_lathe_profiles_renumber_and_move_as_their_source(case: tuple[str
     numbers = [int(m.group(1)) for line in written.splitlines() if (m := re.match(r"N(\d+) ", line))]
     assert numbers == list(range(start, start + step * len(numbers), step))
     _verified(program, written, _lathe())
+
+
+def test_an_isg_jump_follows_its_block() -> None:
+    program = "%1\nN10 G01 X1. F100.\n$GOTO N30\nN20 G01 X2.\nN30 G01 X3.\nM30\n"
+    written = _translate(program, MachineSetup(output=OutputSettings(renumber_start=100)), source="isg",
+                         target="isg")
+    assert written == "%1\nN100 G01 X1. F100.\n$GOTO N120\nN110 G01 X2.\nN120 G01 X3.\nN130 M30\n"
+    report = verify_lines(program.splitlines(keepends=True), written.splitlines(keepends=True), file_in="in.nc",
+                          file_out="out.nc", source="isg", target="isg", setup=MachineSetup())
+    assert report.ok and report.max_deviation == 0.0, report.summary()
+
+
+def test_a_sinumerik_jump_kept_as_written_is_refused() -> None:
+    """The SINUMERIK writer keeps a ``GOTOF`` line as written (its own text): the jump would keep N30 while that
+    block becomes N120, so the run is refused at the jump (``Renumbering.check``)."""
+    program = "N10 G1 X1. F100.\nGOTOF N30\nN20 G1 X2.\nN30 G1 X3.\nM30\n"
+    with pytest.raises(ErrorList, match=r"t\.nc:2:1: error: --renumber cannot rewrite the block numbers this line "
+                                        r"names: the writer keeps it as written"):
+        _translate(program, MachineSetup(output=OutputSettings(renumber_start=100)), source="siemens",
+                   target="siemens")
+
+
+def test_linuxcnc_o_word_labels_are_no_block_numbers() -> None:
+    """LinuxCNC jumps to o-word labels, never to N numbers (which it ignores): the labels stay as written."""
+    program = "G21 G90\n#1=0\no100 while [#1 LT 3]\nN10 G1 X#1 F100\n#1=[#1+1]\no100 endwhile\nN20 M2\n"
+    written = _translate(program, MachineSetup(output=OutputSettings(renumber_start=100)), source="linuxcnc",
+                         target="linuxcnc")
+    assert written == ("N100 G21 G90\n#1=0.\no100 while [#1 LT 3.]\nN110 G1 X#1 F100.\n#1=[#1+1.]\no100 endwhile\n"
+                       "N120 M2\n")
