@@ -361,3 +361,13 @@ def test_linuxcnc_o_word_labels_are_no_block_numbers() -> None:
                          target="linuxcnc")
     assert written == ("N100 G21 G90\n#1=0.\no100 while [#1 LT 3.]\nN110 G1 X#1 F100.\n#1=[#1+1.]\no100 endwhile\n"
                        "N120 M2\n")
+
+
+@pytest.mark.parametrize("numbers", ["all", "tool-changes", "none"])
+def test_a_gsk_macro_jump_is_refused_when_the_lines_are_numbered(numbers: str) -> None:
+    """Before: ``<Output blockNumbers>`` renumbered (or dropped) N30 and left ``G65 H80 P30`` as written, exit 0."""
+    program = "O1000\nG0 X50. Z5.\nN10 G1 X40. F0.2\nG65 H80 P30\nN20 G1 X30.\nN30 G0 X60.\nM30\n"
+    with pytest.raises(ErrorList, match=r"t\.nc:4:1: error: block numbers cannot be rewritten in a program that jumps "
+                                        r"to block numbers: G65 H80 names one"):
+        _translate(program, _lathe(block_numbers=numbers, renumber_start=100), source="gsk", target="gsk")
+    assert _translate(program, _lathe(), source="gsk", target="gsk") == program

@@ -3,9 +3,11 @@ written, defaults included (an omitted word would take the machine's data parame
 
 from __future__ import annotations
 
-from typing import ClassVar
+from typing import ClassVar, Iterable, Iterator, TextIO
 
+from postproc.errors import ProgramError
 from postproc.ir import Block
+from postproc.output.line_format import numbering
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.lathe_writer import LatheWordWriter
 
@@ -37,3 +39,19 @@ class GskWriter(LatheWordWriter):
                 letter in "Gg" and num.lstrip("0") == "65" for letter, num in block.words):
             return f"G65 H{block.values['H']}"
         return None
+
+    def write(self, blocks: Iterable[Block], out: TextIO) -> None:
+        """With ``<Output blockNumbers>`` numbering the written lines (``postproc.output.line_format``), which
+        rewrites every number after the writer, a macro jump is refused as ``--renumber`` refuses it (``normalized``)."""
+        if numbering(self.ctx.setup.output, self.source_dialect != self.DIALECT) != "keep":
+            blocks = self._macro_jumps_refused(blocks)
+        super().write(blocks, out)
+
+    def _macro_jumps_refused(self, blocks: Iterable[Block]) -> Iterator[Block]:
+        for block in blocks:
+            native = self.native_block_reference(block)
+            if native is not None:
+                self.ctx.diagnostics.error(ProgramError(
+                    f"block numbers cannot be rewritten in a program that jumps to block numbers: {native} names one "
+                    f"(the line is kept as written), whose number would change", self.ctx.at(block)))
+            yield block
