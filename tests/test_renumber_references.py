@@ -7,7 +7,8 @@ program's own dialect, the renumbering is an exact old -> new mapping (``postpro
 every literal reference is written with its target's new number, checked by golden files (checked by hand,
 ``tests/golden/renumber/README.md``), by ``verify`` (the renumbered program moves as its source, move for move,
 loops and returns included) and by random programs; what cannot be rewritten exactly (a computed target, a
-missing or repeated number, a numbering that wraps onto a target's number) is refused, located.
+missing or repeated number, a line the writer keeps as written, a GSK ``G65 H80`` macro jump) is refused,
+located; ``--renumber`` does not wrap at ``numberMax``, so no wrapped number lands on a target.
 ``<Output blockNumbers>`` (numbering the written lines) still refuses a program that names block numbers.
 Also: ``--renumber`` between two dialects numbers the written lines (``blockNumbers="all"``), and so does a
 set-up's ``renumberStart`` alone between two dialects (before: ignored, exit 0)."""
