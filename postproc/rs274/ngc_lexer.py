@@ -170,6 +170,7 @@ def strip_comments(file: str, block: Block, code: str) -> str:
     out: list[str] = []
     pos = 0
     n = len(code)
+    semicolon = False
     while pos < n:
         ch = code[pos]
         if ch == "(":
@@ -188,12 +189,13 @@ def strip_comments(file: str, block: Block, code: str) -> str:
             texts.append(code[pos + 1:])
             out.append(" " * (n - pos))
             pos = n
+            semicolon = True
         else:
             nxt = _next_special(code, pos)
             out.append(code[pos:nxt])
             pos = nxt
     if texts:
-        block.add(Comments(texts))
+        block.add(Comments(texts, semicolon))
     return "".join(out)
 
 

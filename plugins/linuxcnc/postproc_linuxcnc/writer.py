@@ -64,6 +64,15 @@ _COMP_LOCKED = frozenset({"ToolLengthOffset", "WorkOffset", "ReturnLevel", "Plan
 _OPENING = (While, If, Do, Repeat)
 _CLOSING = (EndWhile, EndIf, DoWhile, EndRepeat)
 _LABELLED = (*_OPENING, *_CLOSING, ElseIf, Else, Break, Continue)
+_COMMENT = re.compile(r"\([^)]*\)?|;.*")
+"""A comment of a LinuxCNC line: ``(`` to the first ``)`` (they do not nest) or to the line's end, ``;`` to the
+line's end [K: LinuxCNC G-code overview, "Comments"]."""
+
+
+def _polar(text: str) -> bool:
+    """The line has a polar word (``@``, ``^``) outside its comments, where rs274 reads one."""
+    code = _COMMENT.sub(" ", text)
+    return "@" in code or "^" in code
 NAMES = NameRule(numbers=range(0, 2**31), spare=range(0), names=True, lower_case=True, one_kind=True)
 """o-word numbers and ``<names>`` (rs274 lower-cases a line outside its comments); the kind of call
 fixed by the definition (``postproc.interp.rules``)."""
@@ -165,6 +174,27 @@ class LinuxcncWriter(WordWriter):
         """Another dialect's comment text as a comment that does not act (LinuxCNC reads ``(MSG,``,
         ``(LOGOPEN,``, ``(ABORT,`` ... as instructions: ``active_comments.ACTIVE``)."""
         return COMMENTS.comment(text) if self.foreign else super().comment(text)
+
+    def comments_words(self, s: Any, block: Block) -> list[str]:
+        """The block's comments (``comment``), a LinuxCNC line's ``;`` comment kept one (``semicolon_comment``)."""
+        texts: list[str] = s.texts
+        tail = self.semicolon_comment(s)
+        if tail is None:
+            return [self.comment(t) for t in texts]
+        return [*(self.comment(t) for t in texts[:-1]), tail]
+
+    def semicolon_comment(self, comments: Any) -> str | None:
+        """A LinuxCNC line's ``;`` comment (the last of its comments: ``Comments.semicolon``) as a ``;`` comment, to
+        end the line written from its words (a generated block's comments are its last words, ``SECTION_ORDER``;
+        a normalised one's too); None for another's. rs274 acts on the last ``( )`` comment of a line only and
+        never on a ``;`` one [V: rs274 2.9 run here: ``G1 X2 (msg, two) (note)`` shows no message, ``G1 X2 (msg,
+        kept) ; note`` shows it, ``G1 X1. ( msg, hello)`` shows " hello", ``G1 X1 ; msg, hello`` nothing]: written
+        in parentheses, as it was by ``--normalize``, ``--renumber``, ``--units`` or ``--transform``, the ``;``
+        comment became the one that acts, silencing the line's message or showing its own."""
+        texts: list[str] = comments.texts
+        if self.foreign or not comments.semicolon or not texts:
+            return None
+        return ";" + texts[-1]
 
     def cutter_compensation_words(self, s: Any, block: Block) -> list[str]:
         """rs274 turns compensation on only from off ("Cannot turn cutter radius comp on when on"): G41/G42
@@ -395,11 +425,23 @@ class LinuxcncWriter(WordWriter):
         point only where the line runs once from there; in a loop each pass turns further (LinuxCNC's own
         ``spiral.ngc``, ``o100 repeat [800]`` of ``G91 G1 @-.0025 ^4.5``, was normalized to one fixed step, a
         straight line, exit 0). Under ``--renumber`` only its block number changes (``_renumbered``): rewritten
-        from those words, the line in a loop moved by one fixed step on every pass (rs274 run here)."""
+        from those words, the line in a loop moved by one fixed step on every pass (rs274 run here). An ``@`` or
+        ``^`` inside a comment is text, not a polar word (``_polar``): before, such a line was not normalized, and
+        under ``--renumber`` a comment-only, o-word or ``%`` line got a block number."""
         text = block.text
-        if text is not None and ("@" in text or "^" in text):
+        if text is not None and ("@" in text or "^" in text) and _polar(text):
             return text.strip() if not self.renumber else self._renumbered(text.strip())
-        return super().normalized(block)
+        comments = block.sections.get("Comments")
+        tail = None if comments is None else self.semicolon_comment(comments)
+        if tail is None:
+            return super().normalized(block)
+        texts: list[str] = comments.texts  # type: ignore[union-attr]
+        comments.texts = texts[:-1]  # type: ignore[union-attr]  # (the base writes the others, last on the line)
+        try:
+            line = super().normalized(block)
+        finally:
+            comments.texts = texts  # type: ignore[union-attr]
+        return line + " " + tail if line else tail
 
     def _renumbered(self, text: str) -> str:
         """``text`` (a line written as read) with the next block number in place of its own, or before its
