@@ -31,12 +31,11 @@
 from __future__ import annotations
 
 import copy
-import re
 from typing import Any, ClassVar, Iterable, Mapping, TextIO, cast
 
 from postproc.errors import Location, UnsupportedError
 from postproc.ir import Block, ProgramControl, Section
-from postproc.context import Context, word_columns
+from postproc.context import Context
 from postproc.dialect import Dialect
 from postproc.interp.control import (
     Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndFor, EndIf, EndRepeat, EndWhile, For, If, Repeat,
@@ -50,7 +49,7 @@ from postproc.rs274.writer import WordWriter
 from postproc.output.line_feeds import LineFeeds
 from postproc.interp.subprogram_names import NameRule, SubprogramNames
 
-from .active_comments import COMMENTS
+from .active_comments import COMMENTS, semicolon_comment
 from .codes import CODES
 
 
@@ -64,15 +63,6 @@ _COMP_LOCKED = frozenset({"ToolLengthOffset", "WorkOffset", "ReturnLevel", "Plan
 _OPENING = (While, If, Do, Repeat)
 _CLOSING = (EndWhile, EndIf, DoWhile, EndRepeat)
 _LABELLED = (*_OPENING, *_CLOSING, ElseIf, Else, Break, Continue)
-_COMMENT = re.compile(r"\([^)]*\)?|;.*")
-"""A comment of a LinuxCNC line: ``(`` to the first ``)`` (they do not nest) or to the line's end, ``;`` to the
-line's end [K: LinuxCNC G-code overview, "Comments"]."""
-
-
-def _polar(text: str) -> bool:
-    """The line has a polar word (``@``, ``^``) outside its comments, where rs274 reads one."""
-    code = _COMMENT.sub(" ", text)
-    return "@" in code or "^" in code
 NAMES = NameRule(numbers=range(0, 2**31), spare=range(0), names=True, lower_case=True, one_kind=True)
 """o-word numbers and ``<names>`` (rs274 lower-cases a line outside its comments); the kind of call
 fixed by the definition (``postproc.interp.rules``)."""
@@ -178,23 +168,10 @@ class LinuxcncWriter(WordWriter):
     def comments_words(self, s: Any, block: Block) -> list[str]:
         """The block's comments (``comment``), a LinuxCNC line's ``;`` comment kept one (``semicolon_comment``)."""
         texts: list[str] = s.texts
-        tail = self.semicolon_comment(s)
+        tail = None if self.foreign else semicolon_comment(s)
         if tail is None:
             return [self.comment(t) for t in texts]
         return [*(self.comment(t) for t in texts[:-1]), tail]
-
-    def semicolon_comment(self, comments: Any) -> str | None:
-        """A LinuxCNC line's ``;`` comment (the last of its comments: ``Comments.semicolon``) as a ``;`` comment, to
-        end the line written from its words (a generated block's comments are its last words, ``SECTION_ORDER``;
-        a normalised one's too); None for another's. rs274 acts on the last ``( )`` comment of a line only and
-        never on a ``;`` one [V: rs274 2.9 run here: ``G1 X2 (msg, two) (note)`` shows no message, ``G1 X2 (msg,
-        kept) ; note`` shows it, ``G1 X1. ( msg, hello)`` shows " hello", ``G1 X1 ; msg, hello`` nothing]: written
-        in parentheses, as it was by ``--normalize``, ``--renumber``, ``--units`` or ``--transform``, the ``;``
-        comment became the one that acts, silencing the line's message or showing its own."""
-        texts: list[str] = comments.texts
-        if self.foreign or not comments.semicolon or not texts:
-            return None
-        return ";" + texts[-1]
 
     def cutter_compensation_words(self, s: Any, block: Block) -> list[str]:
         """rs274 turns compensation on only from off ("Cannot turn cutter radius comp on when on"): G41/G42
@@ -424,15 +401,21 @@ class LinuxcncWriter(WordWriter):
         Y of the point they reach from where the tool stood when the line was read (``polar``), which is that
         point only where the line runs once from there; in a loop each pass turns further (LinuxCNC's own
         ``spiral.ngc``, ``o100 repeat [800]`` of ``G91 G1 @-.0025 ^4.5``, was normalized to one fixed step, a
-        straight line, exit 0). Under ``--renumber`` only its block number changes (``_renumbered``): rewritten
+        straight line, exit 0). Under ``--renumber`` only its block number changes (``polar.renumbered``): rewritten
         from those words, the line in a loop moved by one fixed step on every pass (rs274 run here). An ``@`` or
-        ``^`` inside a comment is text, not a polar word (``_polar``): before, such a line was not normalized, and
+        ``^`` inside a comment is text, not a polar word (``has_polar_words``): before, such a line was not normalized, and
         under ``--renumber`` a comment-only, o-word or ``%`` line got a block number."""
         text = block.text
-        if text is not None and ("@" in text or "^" in text) and _polar(text):
-            return text.strip() if not self.renumber else self._renumbered(text.strip())
+        if text is not None and ("@" in text or "^" in text):
+            from .polar import has_polar_words, renumbered  # (loaded for such a line only)
+            if has_polar_words(text):
+                number = self.renumber
+                if not number:
+                    return text.strip()
+                self.renumber = number + self.renumber_step
+                return renumbered(text.strip(), number)
         comments = block.sections.get("Comments")
-        tail = None if comments is None else self.semicolon_comment(comments)
+        tail = None if comments is None or self.foreign else semicolon_comment(comments)
         if tail is None:
             return super().normalized(block)
         texts: list[str] = comments.texts  # type: ignore[union-attr]
@@ -442,19 +425,6 @@ class LinuxcncWriter(WordWriter):
         finally:
             comments.texts = texts  # type: ignore[union-attr]
         return line + " " + tail if line else tail
-
-    def _renumbered(self, text: str) -> str:
-        """``text`` (a line written as read) with the next block number in place of its own, or before its
-        first word after a block delete ``/`` where it has none (rs274 reads N first only)."""
-        number = self.renumber
-        self.renumber = number + self.renumber_step
-        own = next(((col, num) for col, letter, num in word_columns(text) if letter in "Nn"), None)
-        if own is not None:
-            found = re.compile(r"[Nn][ \t]*" + re.escape(own[1])).match(text, own[0] - 1)
-            if found is not None:
-                return text[:found.start()] + f"N{number}" + text[found.end():]
-        lead = 1 if text.startswith("/") else 0
-        return text[:lead] + (" " if lead else "") + f"N{number} " + text[lead:].lstrip()
 
     def structure_block(self, block: Block) -> str | None:
         sections = block.sections
