@@ -3,7 +3,8 @@
 
 * ``@`` and ``^`` are polar words only outside comments: a line with one inside a comment (``(a @ ^ b)``, rs274
   reads it as text) was written as read, not normalized, and under ``--renumber`` a comment-only, o-word or
-  ``%`` line with one got a block number (``N30 % (@)``), where the same line without it gets none.
+  ``%`` line with one got a block number, where the same line without it gets none (``% (@)``, which rs274
+  refuses, became ``N30 % (@)``; a ``%`` with a comment is refused when read now: tests/test_linuxcnc.py).
 * A ``;`` comment never acts, and rs274 acts on the last ``( )`` comment of a line only [V: rs274 2.9 run here]:
   ``; msg, hello`` was written ``( msg, hello)``, which rs274 runs as ``MESSAGE(" hello")``, and ``(msg, kept)
   ; note`` as ``(msg, kept) ( note)``, which shows no message. A ``;`` comment is written back as one.
