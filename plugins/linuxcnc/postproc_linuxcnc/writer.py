@@ -34,7 +34,7 @@ import copy
 from typing import Any, ClassVar, Iterable, Mapping, TextIO, cast
 
 from postproc.errors import Location, UnsupportedError
-from postproc.ir import Block, ProgramControl, Section
+from postproc.ir import Block, Comments, ProgramControl, Section
 from postproc.context import Context
 from postproc.dialect import Dialect
 from postproc.interp.control import (
@@ -414,16 +414,16 @@ class LinuxcncWriter(WordWriter):
                     return text.strip()
                 self.renumber = number + self.renumber_step
                 return renumbered(text.strip(), number)
-        comments = block.sections.get("Comments")
+        comments = cast("Comments | None", block.sections.get("Comments"))
         tail = None if comments is None or self.foreign else semicolon_comment(comments)
-        if tail is None:
+        if comments is None or tail is None:
             return super().normalized(block)
-        texts: list[str] = comments.texts  # type: ignore[union-attr]
-        comments.texts = texts[:-1]  # type: ignore[union-attr]  # (the base writes the others, last on the line)
+        texts = comments.texts
+        comments.texts = texts[:-1]  # (the base writes the others, last on the line)
         try:
             line = super().normalized(block)
         finally:
-            comments.texts = texts  # type: ignore[union-attr]
+            comments.texts = texts
         return line + " " + tail if line else tail
 
     def structure_block(self, block: Block) -> str | None:
