@@ -33,6 +33,16 @@ USAGE = [
      "postproc: --renumber takes START[,STEP], got 'ten'"),
     (["translate", PROGRAM, "--from", "fanuc", "--to", "fanuc", "--renumber", "10,0"],
      "postproc: --renumber takes START[,STEP], got '10,0'"),
+    # START 0 asks for nothing the set-up can say (its renumberStart 0 keeps the numbers): before, exit 0 with the
+    # numbers as written (same dialect) or numbered from STEP (between dialects)
+    (["translate", PROGRAM, "--from", "fanuc", "--to", "fanuc", "--renumber", "0"],
+     "postproc: --renumber numbers the blocks from START, at least 1, got '0'"),
+    (["translate", PROGRAM, "--from", "fanuc", "--to", "linuxcnc", "--renumber", "0,5"],
+     "postproc: --renumber numbers the blocks from START, at least 1, got '0,5'"),
+    (["translate", PROGRAM, PROGRAM, "--from", "fanuc", "--to", "fanuc", "--renumber", "0", "-o", ROOT / "no/such"],
+     "postproc: --renumber numbers the blocks from START, at least 1, got '0'"),
+    (["translate", PROGRAM, "--from", "fanuc", "--to", "fanuc", "--renumber="],
+     "postproc: --renumber takes START[,STEP], got ''"),
     (["translate", ROOT / "no/such/file.nc", "--from", "fanuc", "--to", "fanuc"], "postproc: cannot read "),
     # A set-up file named on the command line that cannot be read is usage, as an input is (docs/cli.md)
     (["translate", PROGRAM, "--from", "fanuc", "--to", "fanuc", "--machine", ROOT / "no/such/m.xml"],

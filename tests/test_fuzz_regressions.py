@@ -12,7 +12,7 @@ from postproc.errors import Diagnostics, ErrorList
 from postproc.setup.machine_setup import InputSettings, MachineSettings, MachineSetup
 from postproc.simulate.toolpath import toolpath_events
 from postproc.simulate.verify import verify_lines
-from tests.support.fuzzing import check_translation, known_defect, warned_difference
+from tests.support.fuzzing import UNKNOWN_MEANING_OUTCOME, check_translation, known_defect, warned_difference
 from tests.support.generators.grblhal_targets import check as grblhal_check
 from tests.support.generators.macros import as_rs274_prints
 from tests.support.rs274 import available as rs274_available, canonical_moves, run_rs274
@@ -565,12 +565,22 @@ def test_a_path_control_difference_nobody_warned_of_is_a_defect() -> None:
 
 
 def test_a_machine_move_under_incremental_distance_of_unknown_meaning_is_kept_by_a_copy_and_refused_elsewhere() -> None:
-    """make fuzz (mach3-mach3): Mach3's G53 under G91 is kept verbatim [?] (``MACHINE_MOVE_INCREMENTAL``), so
-    the copy's verify cannot simulate either side: listed as a known defect; another target refuses it, located."""
-    program = HEAD + "G53 G91 Y2.5\n"
-    with pytest.raises(AssertionError) as exc:
-        check_translation("mach3", "mach3", program, with_tools(MachineSetup()), False)
-    assert known_defect("mach3", str(exc.value)) is not None
+    """make fuzz (mach3-mach3): Mach3's G53 under G91 is kept verbatim [?] (``MACHINE_MOVE_INCREMENTAL``): the copy
+    is byte for byte, and its verify refuses both sides, located at the line (it cannot compare what is not known),
+    which the fuzz counts as that outcome, no longer as a listed defect; another target refuses it, located."""
+    program = HEAD + "G53 G91 Y2.5\nG90 G1 X5. Y5. F100.\nM30\n"
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="t.nc", source="mach3", target="mach3")
+    assert out.getvalue() == program
+    with pytest.raises(ErrorList) as verified:
+        verify_lines(io.StringIO(program), io.StringIO(program), file_in="in.nc", file_out="out.nc", source="mach3",
+                     target="mach3")
+    unknown = ("2:1: error: G53 in incremental distance mode (machine positions, increments or ignored: not known for "
+               "this controller [?]) cannot be simulated")
+    assert [str(e) for e in verified.value.errors] == ["in.nc:" + unknown, "out.nc:" + unknown]
+    assert check_translation("mach3", "mach3", program, with_tools(MachineSetup()), False) == UNKNOWN_MEANING_OUTCOME
+    assert check_translation("mach3", "mach3", HEAD + "G53 G91 Y2.5\n", with_tools(MachineSetup()),
+                             False) == UNKNOWN_MEANING_OUTCOME
     with pytest.raises(ErrorList) as refused:
         translate(io.StringIO(program), io.StringIO(), file="t.nc", source="mach3", target="linuxcnc")
     assert [str(e) for e in refused.value.errors] == [

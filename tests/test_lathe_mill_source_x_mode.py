@@ -1,7 +1,7 @@
 """A mill program (grbl, ISG: X read with mill meanings, a position) translated to LinuxCNC or grblHAL on a lathe
 set-up (#20). Both read that set-up's programs as a lathe's, where X may be a diameter (LinuxCNC's lathe start-up
-code may leave G7; the set-up's ``xProgramming`` says diameter by default): the translation opens with ``G18 G8``
-so X means there what it meant in the source (LinuxCNC G8 radius mode [V: rs274 2.9 run here]; grblHAL's G8 clears
+code may leave G7; the set-up's ``xProgramming`` says diameter by default): the translation opens with ``G17 G8``
+(the mill program's plane at start: tests/test_lathe_set_up_plane_arcs.py) so X means there what it meant in the source (LinuxCNC G8 radius mode [V: rs274 2.9 run here]; grblHAL's G8 clears
 ``diameter_mode`` [V: grblHAL core ``gcode.c``]). Found by fuzzing: before, ``G1 X1`` was written bare and read
 as a diameter, 1 mm off.
 
@@ -46,7 +46,7 @@ def _write(source: str, target: str, text: str = MILL) -> str:
 @pytest.mark.parametrize("source", ["grbl", "isg"])
 def test_a_mill_program_on_a_lathe_set_up_says_x_is_a_radius(source: str, target: str) -> None:
     out = _write(source, target, PROGRAMS[source])
-    assert out.splitlines()[0] == "G18 G8", out
+    assert out.splitlines()[0] == "G17 G8", out  # the mill program starts in XY (G17)
     report = verify_lines(io.StringIO(PROGRAMS[source]), io.StringIO(out), file_in="in.nc", file_out="out.nc", source=source,
                           target=target, setup=_setup(), tolerance=0.0)
     assert report.ok and report.max_deviation == 0.0, report.summary()

@@ -154,6 +154,14 @@ def test_lexical_errors_are_located(text: str, message: str) -> None:
     assert errors(text + "\n") == [message]
 
 
+@pytest.mark.parametrize("text, line", [("%\nG0 X1\n% (end)\n", 3), ("%;x\nG0 X1\nM2\n", 1), ("%(a @)\nM2\n", 1)])
+def test_a_percent_with_a_comment_beside_it_is_refused(text: str, line: int) -> None:
+    """rs274 refuses ``% (end)`` ("Bad character '%' used" [V: rs274 2.9 run here]); it was read as a tape mark,
+    and a translation wrote ``%``, exit 0."""
+    assert errors(text)[0] == (f"t.ngc:{line}:1: error: '%' must stand alone on its line: no comment beside it "
+                               "(LinuxCNC: \"Bad character '%' used\")")
+
+
 def test_block_delete_and_percent_lines() -> None:
     blocks = read("%\n/G0 X1 Y2 Z3\n%\n")
     assert "TapeMark" in blocks[0].sections and "TapeMark" in blocks[2].sections

@@ -147,8 +147,10 @@ def _arguments(texts: Sequence[str]) -> dict[str, float]:
 
 
 def _renumber(text: str | None) -> tuple[int, int | None] | None:
-    """``--renumber START[,STEP]`` as numbers (a usage error otherwise; the set-up checks their range)."""
-    if not text:
+    """``--renumber START[,STEP]`` as numbers (a usage error otherwise; the set-up checks their range). START 0
+    (or an empty value) is wrong usage: the option asks for numbering, and a set-up's ``renumberStart`` 0 means
+    "keep the numbers as written", so it would be dropped without a word (docs/cli.md)."""
+    if text is None:
         return None
     from ..setup.machine_setup import OutputSettings
     from ..setup.validate import Invalid, validate
@@ -157,9 +159,12 @@ def _renumber(text: str | None) -> tuple[int, int | None] | None:
         numbers = int(start), int(step) if step else None
         given = {"renumber_start": numbers[0]} | ({} if numbers[1] is None else {"renumber_step": numbers[1]})
         validate(OutputSettings, given)  # the set-up's own bounds
-        return numbers
     except (ValueError, Invalid):
         raise UsageError(f"--renumber takes START[,STEP], got {text!r}") from None
+    if numbers[0] == 0:
+        raise UsageError(f"--renumber numbers the blocks from START, at least 1, got {text!r} (0 is the set-up's "
+                         "renumberStart for keeping the numbers as written: leave the option out for that)")
+    return numbers
 
 
 def cmd_toolpath(args: argparse.Namespace) -> int:

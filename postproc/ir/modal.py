@@ -417,10 +417,14 @@ class Comments(Section):
     XNAME = "Comments"
 
     KEY = "Comments"
-    __slots__ = ("texts",)
+    __slots__ = ("texts", "semicolon")
 
-    def __init__(self, texts: list[str]) -> None:
+    def __init__(self, texts: list[str], semicolon: bool = False) -> None:
         self.texts = texts
+        self.semicolon = semicolon
+        """The last text was a ``;`` comment (RS274/NGC reading): LinuxCNC acts on some ``( )`` comments and never
+        on a ``;`` one, so its writer keeps that one inert (``postproc_linuxcnc.writer``). Not in the XML: a
+        block rebuilt from it, or a section made anew, says False (written as before)."""
 
     @classmethod
     def from_xml(cls, el: etree._Element) -> "Comments":

@@ -8,7 +8,8 @@ The rules, each checked with rs274 (2.9) [V] (see ``ngc_lathe`` for the reading 
 planner's distance per revolution along the path]:
 
 * A translated lathe program starts with ``G18 G7`` (or ``G8`` when it programs radii): a LinuxCNC lathe's
-  start-up code may leave either mode, so the program says it (``LatheModes.preamble``).
+  start-up code may leave either mode, so the program says it (``LatheModes.preamble``). A mill program on a
+  lathe set-up starts with ``G17 G8``: its source's plane at start is XY (``NgcLatheWriting.mode_line``).
 * A program that switches how X reads (``XProgramming``, read from LinuxCNC's G7/G8) keeps its switches on a
   controller with ``X_MODE_CODES``: the IR's X (the set-up's mode) is written halved or doubled while the
   program's mode differs, on a move; any other section with an X, and a compound motion (a G76 rewritten),
@@ -218,7 +219,18 @@ class NgcLatheWriting(_OnWordWriter):
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
         super().__init__(ctx, source_dialect, target)
         foreign = source_dialect != self.DIALECT
-        self.lathe = LatheModes(ctx, self.MODE_LINES["diameter" if ctx.diameter else "radius"] if foreign else None)
+        self.lathe = LatheModes(ctx, self.mode_line(ctx) if foreign else None)
+
+    def mode_line(self, ctx: Context) -> str:
+        """``MODE_LINES``'s line; for a mill program on a lathe set-up (#20) with the XY plane in it of the ZX:
+        its source starts in XY (G17), where a lathe's start-up code may leave G18, so an XY arc it programs
+        without a plane code stays in XY (before, ``G18 G8`` then ``G2 X1 I0.5 J0``, which the target reads
+        in ZX and verify refuses)."""
+        line = self.MODE_LINES["diameter" if ctx.diameter else "radius"]
+        if ctx.lathe:
+            return line
+        zx, xy = self.codes.spell("plane", "ZX"), self.codes.spell("plane", "XY")
+        return " ".join(xy if word == zx and xy is not None else word for word in line.split())
 
     def write_block(self, block: Block) -> str | None:
         """A lathe program translated here opens with its mode line (``LatheModes.opening``); a switch of how X

@@ -170,6 +170,7 @@ def strip_comments(file: str, block: Block, code: str) -> str:
     out: list[str] = []
     pos = 0
     n = len(code)
+    semicolon = False
     while pos < n:
         ch = code[pos]
         if ch == "(":
@@ -188,12 +189,13 @@ def strip_comments(file: str, block: Block, code: str) -> str:
             texts.append(code[pos + 1:])
             out.append(" " * (n - pos))
             pos = n
+            semicolon = True
         else:
             nxt = _next_special(code, pos)
             out.append(code[pos:nxt])
             pos = nxt
     if texts:
-        block.add(Comments(texts))
+        block.add(Comments(texts, semicolon))
     return "".join(out)
 
 
@@ -332,7 +334,8 @@ class NgcReader(Reader):
     """Empty: a ``%`` line is a tape mark wherever it stands (a subclass may read it otherwise). Else a ``%`` is
     the program's first line or closes a program opened with one, and any other is refused unless the program
     has already ended (M2/M30), with this quoted in the error as what the controller says (LinuxCNC's rs274:
-    "Bad character '%' used"). Read here, in the family's compiled loop: as a subclass's generator around it,
+    "Bad character '%' used"); so is a ``%`` with a comment beside it (``% (end)``, which rs274 refuses so [V: rs274
+    2.9 run here], first line or last: it was read as a tape mark and written ``%``, exit 0). Read here, in the family's compiled loop: as a subclass's generator around it,
     the rule cost every line a resumption in Python (~3k instructions)."""
     MAX_BLOCK_NUMBER: ClassVar[int] = 0
     """The largest block number the controller reads (0: any); a larger one is a located error, as the controller
@@ -376,6 +379,11 @@ class NgcReader(Reader):
             if refused:
                 sections = block.sections
                 if "TapeMark" in sections:
+                    if "Comments" in sections and not ended:  # (rs274 reads a comment-only line, a '%' alone)
+                        report(ParseError(f"'%' must stand alone on its line: no comment beside it ({refused})",
+                                          Location(file, number, text.find("%") + 1)), text)
+                        yield Block(number, text, eol)  # kept as text, as every refused line
+                        continue
                     if opened is False and not ended:
                         report(ParseError(f"'%' closes only a program that opens with '%' on its first line ({refused})",
                                           Location(file, number, 1)), text)

@@ -222,9 +222,15 @@ def _numbers(values: dict[str, float | Expr]) -> dict[str, float] | None:
 def _check_arc(block: Block, ctx: Context, motion: Motion) -> None:
     """Refuse an arc no controller runs (``postproc.block_rules.arc_centre``) when its start is known or
     does not matter (incremental words), so ``translate`` refuses what ``toolpath`` refuses; an arc with a
-    computed word waits for the run."""
+    computed word waits for the run. An arc in a plane the machine lacks an axis of (an XY arc on a lathe's
+    XZ set-up) is refused whatever its words: it would sweep that axis (``postproc.simulate.moves``)."""
     state = ctx.state
     a1, a2, _ = PLANE_AXES[state.plane]
+    machine = ctx.axis_words
+    if a1 not in machine or a2 not in machine:  # (an XY arc on a lathe's XZ: the simulator refuses it alike)
+        missing = a1 if a1 not in machine else a2
+        _refuse(block, ctx, motion, ArcError(f"an arc in the {state.plane} plane needs axis {missing}, not on this "
+                                             f"machine (axes {ctx.setup.machine.axes})", "G"))
     if motion.center:
         for axis in motion.center:
             if axis != a1 and axis != a2:

@@ -14,7 +14,7 @@ import re
 from postproc.syntaxes.comments import CommentSyntax
 from postproc.context import Context
 from postproc.dialect import Dialect
-from postproc.ir import Block
+from postproc.ir import Block, Comments
 from postproc.lowering.lower import BlockStep, LoweringStep
 
 ACTIVE = re.compile(r"[ \t]*(MSG|DEBUG|PRINT|LOGOPEN|LOGAPPEND|LOGCLOSE|LOG|PROBEOPEN|PROBECLOSE|ABORT|PY)\b"
@@ -26,6 +26,22 @@ linuxcnc-uspace 2.9 acts on ``( MSG,`` ``(msg,`` ``(DEBUG,`` ``(PRINT,`` ``(LOG,
 COMMENTS = CommentSyntax(parens=True, nested=False, semicolon=True, active=ACTIVE)
 """``( )`` comments, which do not nest (rs274: "Nested comment found" [V]), and ``;`` to the end of the line
 [V]; the active ones above."""
+
+
+def semicolon_comment(comments: Comments) -> str | None:
+    """A LinuxCNC line's ``;`` comment (the last of its comments: ``Comments.semicolon``) as a ``;`` comment, to end
+    the line the writer writes from its words (a generated block's comments are its last words, ``SECTION_ORDER``; a
+    normalised one's too); None where the line has none. rs274 acts on the last ``( )`` comment of a line only and
+    never on a ``;`` one [V: rs274 2.9 run here: ``G1 X2 (msg, two) (note)`` shows no message, ``G1 X2 (msg, kept)
+    ; note`` shows it, ``G1 X1. ( msg, hello)`` shows " hello", ``G1 X1 ; msg, hello`` nothing]: written in
+    parentheses, as it was by ``--normalize``, ``--renumber``, ``--units`` or ``--transform``, the ``;`` comment
+    became the one that acts, silencing the line's message or showing its own."""
+    texts = comments.texts
+    if not comments.semicolon or not texts:
+        return None
+    return ";" + texts[-1]
+
+
 LOST = {
     "MSG": "the operator no longer sees the message",
     "DEBUG": "its text is no longer printed",

@@ -30,9 +30,10 @@ check and follow it) and written as read (``postproc_linuxcnc.writer``).
 
 from __future__ import annotations
 
+import re
 from typing import Callable, Final, Iterable, Iterator
 
-from postproc.context import Context
+from postproc.context import Context, word_columns
 from postproc.errors import Location, ProgramError
 from postproc.ir.expr import Expr, Num
 from postproc.interp import spell_number
@@ -226,6 +227,25 @@ def _columns(block: Block, ctx: Context) -> Callable[..., Location]:
             return ctx.at(block, at + 1 if at >= 0 else 1)
         return ctx.at(block, ctx.column_of(block, letter, nth=nth))
     return column
+
+
+def has_polar_words(text: str) -> bool:
+    """The line has a polar word outside its comments (``_code``), where rs274 reads one; an ``@`` or ``^`` in a
+    comment is text (``LinuxcncWriter.normalized``)."""
+    code = _code(text)
+    return "@" in code or "^" in code
+
+
+def renumbered(text: str, number: int) -> str:
+    """``text`` (a polar line written as read) with block number ``number`` in place of its own, or before its
+    first word after a block delete ``/`` where it has none (rs274 reads N first only)."""
+    own = next(((col, num) for col, letter, num in word_columns(text) if letter in "Nn"), None)
+    if own is not None:
+        found = re.compile(r"[Nn][ \t]*" + re.escape(own[1])).match(text, own[0] - 1)
+        if found is not None:
+            return text[:found.start()] + f"N{number}" + text[found.end():]
+    lead = 1 if text.startswith("/") else 0
+    return text[:lead] + (" " if lead else "") + f"N{number} " + text[lead:].lstrip()
 
 
 def _code(text: str) -> str:

@@ -31,12 +31,11 @@
 from __future__ import annotations
 
 import copy
-import re
 from typing import Any, ClassVar, Iterable, Mapping, TextIO, cast
 
 from postproc.errors import Location, UnsupportedError
-from postproc.ir import Block, ProgramControl, Section
-from postproc.context import Context, word_columns
+from postproc.ir import Block, Comments, ProgramControl, Section
+from postproc.context import Context
 from postproc.dialect import Dialect
 from postproc.interp.control import (
     Assign, Break, Call, Continue, Do, DoWhile, Else, ElseIf, EndFor, EndIf, EndRepeat, EndWhile, For, If, Repeat,
@@ -50,7 +49,7 @@ from postproc.rs274.writer import WordWriter
 from postproc.output.line_feeds import LineFeeds
 from postproc.interp.subprogram_names import NameRule, SubprogramNames
 
-from .active_comments import COMMENTS
+from .active_comments import COMMENTS, semicolon_comment
 from .codes import CODES
 
 
@@ -165,6 +164,14 @@ class LinuxcncWriter(WordWriter):
         """Another dialect's comment text as a comment that does not act (LinuxCNC reads ``(MSG,``,
         ``(LOGOPEN,``, ``(ABORT,`` ... as instructions: ``active_comments.ACTIVE``)."""
         return COMMENTS.comment(text) if self.foreign else super().comment(text)
+
+    def comments_words(self, s: Any, block: Block) -> list[str]:
+        """The block's comments (``comment``), a LinuxCNC line's ``;`` comment kept one (``semicolon_comment``)."""
+        texts: list[str] = s.texts
+        tail = None if self.foreign else semicolon_comment(s)
+        if tail is None:
+            return [self.comment(t) for t in texts]
+        return [*(self.comment(t) for t in texts[:-1]), tail]
 
     def cutter_compensation_words(self, s: Any, block: Block) -> list[str]:
         """rs274 turns compensation on only from off ("Cannot turn cutter radius comp on when on"): G41/G42
@@ -394,25 +401,30 @@ class LinuxcncWriter(WordWriter):
         Y of the point they reach from where the tool stood when the line was read (``polar``), which is that
         point only where the line runs once from there; in a loop each pass turns further (LinuxCNC's own
         ``spiral.ngc``, ``o100 repeat [800]`` of ``G91 G1 @-.0025 ^4.5``, was normalized to one fixed step, a
-        straight line, exit 0). Under ``--renumber`` only its block number changes (``_renumbered``): rewritten
-        from those words, the line in a loop moved by one fixed step on every pass (rs274 run here)."""
+        straight line, exit 0). Under ``--renumber`` only its block number changes (``polar.renumbered``): rewritten
+        from those words, the line in a loop moved by one fixed step on every pass (rs274 run here). An ``@`` or
+        ``^`` inside a comment is text, not a polar word (``has_polar_words``): before, such a line was not normalized, and
+        under ``--renumber`` a comment-only, o-word or ``%`` line got a block number."""
         text = block.text
         if text is not None and ("@" in text or "^" in text):
-            return text.strip() if not self.renumber else self._renumbered(text.strip())
-        return super().normalized(block)
-
-    def _renumbered(self, text: str) -> str:
-        """``text`` (a line written as read) with the next block number in place of its own, or before its
-        first word after a block delete ``/`` where it has none (rs274 reads N first only)."""
-        number = self.renumber
-        self.renumber = number + self.renumber_step
-        own = next(((col, num) for col, letter, num in word_columns(text) if letter in "Nn"), None)
-        if own is not None:
-            found = re.compile(r"[Nn][ \t]*" + re.escape(own[1])).match(text, own[0] - 1)
-            if found is not None:
-                return text[:found.start()] + f"N{number}" + text[found.end():]
-        lead = 1 if text.startswith("/") else 0
-        return text[:lead] + (" " if lead else "") + f"N{number} " + text[lead:].lstrip()
+            from .polar import has_polar_words, renumbered  # (loaded for such a line only)
+            if has_polar_words(text):
+                number = self.renumber
+                if not number:
+                    return text.strip()
+                self.renumber = number + self.renumber_step
+                return renumbered(text.strip(), number)
+        comments = cast("Comments | None", block.sections.get("Comments"))
+        tail = None if comments is None or self.foreign else semicolon_comment(comments)
+        if comments is None or tail is None:
+            return super().normalized(block)
+        texts = comments.texts
+        comments.texts = texts[:-1]  # (the base writes the others, last on the line)
+        try:
+            line = super().normalized(block)
+        finally:
+            comments.texts = texts
+        return line + " " + tail if line else tail
 
     def structure_block(self, block: Block) -> str | None:
         sections = block.sections
