@@ -155,7 +155,13 @@ def _other_clearances(ctx: Context, target: type[Dialect]) -> frozenset[str]:
 def _restore_motion_mode(compound: CompoundMotion, mode: str | None) -> None:
     """End the expansion in the group-01 mode the program had, so a plain move after G80 keeps it (a rigid
     tap's synchronised move is a motion mode of its own on a target that writes it)."""
-    last = next((item for item in reversed(compound.items) if isinstance(item, (Motion, RigidTap))), None)
+    items = compound.items
+    last: Motion | RigidTap | None = None
+    for at in range(len(items) - 1, -1, -1):  # (from the end; compiled, a generator's ``next`` cost ~250 a hole)
+        item = items[at]
+        if isinstance(item, (Motion, RigidTap)):
+            last = item
+            break
     if last is not None and mode in ("rapid", "linear") and (isinstance(last, RigidTap) or last.mode != mode):
         compound.items.append(Motion(mode, {}))
 

@@ -463,9 +463,11 @@ class Failer:
     def __init__(self, ctx: Context, block: Block, code: str, call: bool) -> None:
         self.ctx, self.code, self.call = ctx, code, call
         self.line = block.line
-        self.origin = block.origin if isinstance(block, ExecutedBlock) else None
+        self.origin = block.origin if type(block) is not Block and isinstance(block, ExecutedBlock) else None
         """Where the block is (its file and call stack): not the block itself, which holds the expansion
-        that holds this (a reference cycle per cycle block, freed only by the paused collector)."""
+        that holds this (a reference cycle per cycle block, freed only by the paused collector). (A block read
+        from the text is a ``Block`` itself, told natively: an ``ExecutedBlock`` test alone is a look-up of the
+        interpreted class and a generic test, ~400 instructions a hole compiled.)"""
         self.text = block.text
         """The text as read: an expansion made later (``CompoundMotion.lazy``) still points at its word
         after a lowering step rewrote the block."""
