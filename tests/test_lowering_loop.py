@@ -221,6 +221,42 @@ def test_a_step_whose_work_is_over_sees_no_block_but_still_finishes() -> None:
     assert seen == ["a:p1", "c:p1", "a:x", "c:x", "c:p2", "c:y", "a:end", "c:end"]
 
 
+class _Flags(BlockStep):
+    """A step that only carries ``moves`` and ``passes`` (the walk's marks are what is looked at)."""
+
+    def take(self, block: Block) -> list[Block] | None:
+        return None
+
+
+def _marks(walk: lower.Walk) -> tuple[list[int], list[int], list[int], list[int]]:
+    return walk.next_move, walk.next_take, [id(step) for step in walk.route], walk.route_at
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.tuples(st.booleans(), st.booleans()), min_size=1, max_size=12), st.data())
+def test_a_step_turning_moves_marks_the_walk_as_marking_it_anew(flags: list[tuple[bool, bool]],
+                                                                 data: st.DataObject) -> None:
+    """``Walk.moved`` (one step's ``moves`` turned, its work not over) leaves the walk's marks as ``marked``
+    makes them from all the steps, over random steps and turns (a turned step's ``moves`` read before and after)."""
+    steps: list[BlockStep] = []
+    for moves, passes in flags:
+        step = _Flags()
+        step.moves, step.passes = moves, passes
+        steps.append(step)
+    walk = lower.Walk(steps)
+    open_steps = [k for k, step in enumerate(steps) if not step.passes]
+    for _ in range(data.draw(st.integers(0, 6))):
+        if not open_steps:
+            break
+        k = data.draw(st.sampled_from(open_steps))
+        steps[k].moves = not steps[k].moves
+        old_route = walk.route
+        walk.moved(k)
+        assert old_route is not walk.route or not old_route  # (a walk down the old route goes on down it)
+        fresh = lower.Walk(steps)
+        assert _marks(walk) == _marks(fresh)
+
+
 def test_steps_run_as_one_step_as_they_run_in_the_loop() -> None:
     blocks = [("a", False), ("b", True), ("c", False), ("d", True)]
     alone: list[str] = []

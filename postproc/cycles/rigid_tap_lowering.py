@@ -60,8 +60,9 @@ class _Taps(BlockStep):
         code = sections.get("MachineFunction")
         if isinstance(code, MachineFunction) and code.action == RIGID_TAP and code.family == family:
             self.own_code = True
-        if (synchronises or target.TAP_STROKES or target.RIGID_TAP_CYCLE) and isinstance(code, MachineFunction) \
-                and code.action == RIGID_TAP and code.family != family:
+        if isinstance(code, MachineFunction) and code.action == RIGID_TAP and code.family != family \
+                and (synchronises or target.TAP_STROKES or target.RIGID_TAP_CYCLE):  # (the block first: the
+            # target's flags are class attributes, each a look-up by name, ~270 instructions an expanded hole)
             _leave_out(block, code)
         taps = rigid_taps(block)
         if not taps:

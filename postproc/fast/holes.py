@@ -91,7 +91,9 @@ class NextHoleLane(HoleLane):
                     return False  # the resolver keeps a computed word verbatim first
                 words[letter] = value
         va, vb = words.get(first), words.get(second)
-        spot = {first: a if va is None else float(va), second: b if vb is None else float(vb)}
+        at_a = a if va is None else float(va)
+        at_b = b if vb is None else float(vb)
+        spot = {first: at_a, second: at_b}
         # the tool's X, Y and Z, each known (the plane's three axes are): with no other axis, the whole of it
         here = cast("dict[str, float]", dict(tool)) if len(tool) == 3 else {
             k: v for k, v in tool.items() if k in "XYZ" and v is not None}
@@ -117,7 +119,7 @@ class NextHoleLane(HoleLane):
         # ``install`` given where the block leaves the tool, which it then does without failing: its record
         # and motion added, the block's Motion(None) gone, the tool moved over the spot (as ``holes``
         # makes it: X-0. ends at 0.0) to the return level (a next-hole block has no CycleCall)
-        over_a, over_b = spot[first] + 0.0, spot[second] + 0.0
+        over_a, over_b = at_a + 0.0, at_b + 0.0  # (the spot's, kept in locals: no look-up back)
         level = expansion.return_level(cycle)
         sections = block.sections
         compound = CompoundMotion.lazy(cycle.kind, lazy)

@@ -408,5 +408,7 @@ def _saw_pointed(ctx: Context, axes: dict[str, float | Expr], line: int) -> None
     if ctx.point_mix is not None:
         mix = point_mix(ctx)
         if mix is not None:
-            for up in axes:
-                mix.saw_pointed(ctx, up, line)
+            pointed = mix.pointed  # (an axis seen with its point already is all a block tells, once the program's
+            for up in axes:  # first moves are read: a look-up, not a call, ~400 instructions a block compiled)
+                if up not in pointed:
+                    mix.saw_pointed(ctx, up, line)

@@ -210,7 +210,7 @@ class FrameEvaluator(BlockStep):
             changed = self.data_setting(block, s)
             frame = self.frame
         change = s.get("FrameChange")
-        if isinstance(change, FrameChange):
+        if change is not None and isinstance(change, FrameChange):  # (an interpreted class: a generic test)
             if self.reached.symbolic:
                 self.reached.order.command(SYMBOLIC)  # refused unless it runs where the text has it
             self.command(block, change)
@@ -297,8 +297,10 @@ class FrameEvaluator(BlockStep):
         if cc is not None:
             self.modal.extra["frames.cutter"] = cc.mode  # type: ignore[attr-defined]
         if "CompoundMotion" in s:
-            for axis in XYZ:
-                self.p[axis] = None  # a cycle's last point is not read here (its expansion may be lazy)
+            p = self.p  # a cycle's last point is not read here (its expansion may be lazy); X, Y and Z each named:
+            p["X"] = None  # a loop over ``XYZ``, another module's constant, built and walked the tuple generically
+            p["Y"] = None  # (~600 instructions an expanded hole compiled)
+            p["Z"] = None
             return
         m = s.get("Motion")
         if not isinstance(m, Motion) or m.mode is None:

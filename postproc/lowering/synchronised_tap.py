@@ -109,11 +109,17 @@ class RigidTap(Section):
 
 
 def rigid_taps(block: Block) -> list[RigidTap]:
-    """The rigid taps a block makes: its own section, or the items of its expansion."""
+    """The rigid taps a block makes: its own section, or the items of its expansion. (One list, appended: an
+    expansion's items as a comprehension extending it cost two lists more an expanded hole, ~500 instructions
+    compiled.)"""
     sections = block.sections
     own = sections.get("RigidTap")
-    found = [own] if isinstance(own, RigidTap) else []
+    found: list[RigidTap] = []
+    if isinstance(own, RigidTap):
+        found.append(own)
     compound = sections.get("CompoundMotion")
     if isinstance(compound, CompoundMotion) and "CannedCycle" not in sections:  # an expansion to be written
-        found.extend(item for item in compound.items if isinstance(item, RigidTap))
+        for item in compound.items:
+            if isinstance(item, RigidTap):
+                found.append(item)
     return found
