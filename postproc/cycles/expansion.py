@@ -221,7 +221,10 @@ class PathMove(Motion):
     __slots__ = ("x", "y", "z", "made")
 
     def __init__(self, mode: str, axes: dict[str, float | Expr], x: float, y: float, z: float) -> None:
-        super().__init__(mode, axes)
+        self.mode = mode  # (``Motion.__init__``'s fields, set here: a move of every hole, one call fewer)
+        self.axes = axes
+        self.center = None
+        self.radius = None
         self.x = x
         self.y = y
         self.z = z
