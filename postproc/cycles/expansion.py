@@ -129,7 +129,12 @@ class ToolPath:
                 return
             if was_n is not None and _near(given_n, was_n):
                 return
-            axes = self._axes(was_a, was_b, given_n, True)
+            last = self.last
+            if last is None:
+                axes = self._axes(was_a, was_b, given_n, True)
+            else:  # (``_axes`` of a level: the last move's, the normal's number set)
+                axes = last.copy()
+                axes[self.axes[2]] = given_n
             self.add(self._made(mode, axes, was_a, was_b, given_n))
             self.last = axes
             self.n = given_n
