@@ -12,7 +12,7 @@ from __future__ import annotations
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from postproc.cycles.expansion import EPS, CycleExpansion, ToolPath, holes
+from postproc.cycles.expansion import EPS, CycleExpansion, ToolPath
 from postproc.cycles.resolve import EXPANSIONS
 from postproc.cycles.section import CannedCycle
 from postproc.errors import ProgramError
@@ -63,6 +63,15 @@ class ReferencePath(ToolPath):
             raise ProgramError(f"the tool's {missing[0]} position is unknown before the cycle")
         self.add(Motion(mode, {k: target[k] for k in "XYZ"}))
         self.pos = target
+
+
+def holes(cycle: CannedCycle) -> list[tuple[float, float]]:
+    """The plane positions of the block's holes, as the expansion first listed them: a G91 row, or the same spot
+    K times."""
+    first, second, _ = PLANE_AXES[cycle.plane]
+    a, b = cycle.position[first], cycle.position[second]
+    da, db = cycle.step.get(first, 0.0), cycle.step.get(second, 0.0)
+    return [(a + i * da, b + i * db) for i in range(cycle.repeat)]
 
 
 def reference_expand(expansion: CycleExpansion, cycle: CannedCycle) -> tuple[list[Section], dict[str, float]]:

@@ -103,9 +103,11 @@ class ToolPath:
         self._move("rapid", a, b, level)
 
     def cut(self, level: float, feed: float | None) -> None:
-        """Feed along the drilling axis (down into the hole, or up in back boring)."""
-        if feed is not None and feed != self.feed:
-            self.add(Feed(feed))
+        """Feed along the drilling axis (down into the hole, or up in back boring). (The feed of every cut of a
+        cycle is the one object ``cycle.feed``: the same object is the same feed, without a compare of numbers.)"""
+        given: Any = feed
+        if given is not None and given is not self.feed and given != self.feed:
+            self.add(Feed(feed))  # type: ignore[arg-type]
             self.feed = feed
         self._move("linear", None, None, level)
 
@@ -120,6 +122,23 @@ class ToolPath:
         given_a: Any = a
         given_b: Any = b
         given_n: Any = level
+        if given_a is None and given_b is None and given_n is not None:
+            # to a level, over the spot where the tool stands: every move of a hole after its positioning
+            if was_a is None or was_b is None:
+                _unknown(self.axes, was_a, was_b, given_n)
+                return
+            if was_n is not None and _near(given_n, was_n):
+                return
+            last = self.last
+            if last is None:
+                axes = self._axes(was_a, was_b, given_n, True)
+            else:  # (``_axes`` of a level: the last move's, the normal's number set)
+                axes = last.copy()
+                axes[self.axes[2]] = given_n
+            self.add(self._made(mode, axes, was_a, was_b, given_n))
+            self.last = axes
+            self.n = given_n
+            return
         to_a: Any = was_a if given_a is None else given_a
         to_b: Any = was_b if given_b is None else given_b
         to_n: Any = was_n if given_n is None else given_n
@@ -207,7 +226,10 @@ class PathMove(Motion):
     __slots__ = ("x", "y", "z", "made")
 
     def __init__(self, mode: str, axes: dict[str, float | Expr], x: float, y: float, z: float) -> None:
-        super().__init__(mode, axes)
+        self.mode = mode  # (``Motion.__init__``'s fields, set here: a move of every hole, one call fewer)
+        self.axes = axes
+        self.center = None
+        self.radius = None
         self.x = x
         self.y = y
         self.z = z
@@ -279,15 +301,6 @@ def level(cycle: CannedCycle, name: str) -> float:
     return float(value)
 
 
-def holes(cycle: CannedCycle) -> list[tuple[float, float]]:
-    """The plane positions of the holes this block makes: a G91 row, or the same spot K times. (A list, not a
-    generator: compiled, a generator cost every hole ~3k instructions.)"""
-    first, second, _ = PLANE_AXES[cycle.plane]
-    a, b = cycle.position[first], cycle.position[second]
-    da, db = cycle.step.get(first, 0.0), cycle.step.get(second, 0.0)
-    return [(a + i * da, b + i * db) for i in range(cycle.repeat)]
-
-
 @mypyc_attr(allow_interpreted_subclasses=True)
 class CycleExpansion(Syntax):
     """Base of the per-family expansion syntaxes. Subclasses set ``KINDS`` and implement ``hole``.
@@ -329,8 +342,11 @@ class CycleExpansion(Syntax):
         if cycle.repeat <= 0:
             return path
         self._enter(path, cycle, limit)
-        for a, b in holes(cycle):
-            self.hole(path, cycle, a, b)
+        first, second, _ = path.axes
+        a, b = cycle.position[first], cycle.position[second]
+        da, db = cycle.step.get(first, 0.0), cycle.step.get(second, 0.0)
+        for i in range(cycle.repeat):  # the holes: a G91 row, or the same spot K times (no list of them to build)
+            self.hole(path, cycle, a + i * da, b + i * db)
         return path
 
     def end(self, cycle: CannedCycle, limit: int = UNBOUNDED) -> dict[str, float]:
@@ -365,8 +381,9 @@ class CycleExpansion(Syntax):
 
     def _enter(self, path: ToolPath, cycle: CannedCycle, limit: int) -> None:
         """The checks before the first hole, and RS274's rise to R when the tool starts below it."""
-        for name in ("initial", "r", "bottom"):
-            level(cycle, name)
+        initial = level(cycle, "initial")
+        r = level(cycle, "r")
+        level(cycle, "bottom")
         per_hole = self.least_moves_per_hole(cycle)
         if cycle.repeat * per_hole > limit:
             if per_hole > 1:
@@ -376,7 +393,7 @@ class CycleExpansion(Syntax):
             raise TooManyMoves(f"{cycle.repeat} holes make more than {limit} moves in one block (the set-up's "
                                "<Limits movesPerBlock>)", "repeat")
         rules = rules_of(cycle)
-        if rules.rise_to_r and level(cycle, "initial") < level(cycle, "r") - EPS:
+        if rules.rise_to_r and initial < r - EPS:
             path.rapid(level=cycle.r)
 
     def least_moves_per_hole(self, cycle: CannedCycle) -> int:

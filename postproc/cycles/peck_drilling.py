@@ -58,17 +58,19 @@ class PeckDrillingExpansion(CycleExpansion):
         r, bottom = level(cycle, "r"), level(cycle, "bottom")
         q = peck_depth(cycle)
         d = cycle.clearance or 0.0
+        feed = cycle.feed
+        deep = cycle.kind == "peck_deep"
         k = 1
         depth = r - q
         last = bottom + remainder_tolerance(q)
         while depth > last:
-            path.cut(depth, cycle.feed)
-            if cycle.kind == "peck_deep":
+            path.cut(depth, feed)
+            if deep:
                 path.rapid(level=r)
             path.rapid(level=depth + d)
             k += 1
             depth = r - k * q
-        path.cut(bottom, cycle.feed)
+        path.cut(bottom, feed)
         path.rapid(level=self.return_level(cycle))
 
 

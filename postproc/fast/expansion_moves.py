@@ -66,8 +66,9 @@ class ExpansionMoves(MoveLane):
         then reads the writer's table of exact texts): an expansion writes the same few lines (``G1 Z-5.``,
         ``G0 Z2.``) at every hole. A float key, not a tuple: no tuple to build and hash a move."""
         self.numbers: list[dict[float, str]] = [{}, {}, {}]
-        """Per axis (X, Y, Z): number -> its text, spelt likewise, for the moves that write more than one word
-        (a hole's positioning, ``G0 X6.35 Y0. Z2.``: the level and the row's other axis repeat)."""
+        """Per axis (X, Y, Z): number -> its word with the space before it (`` Z2.``), spelt likewise, for the
+        moves that write more than one word (a hole's positioning, ``G0 X6.35 Y0. Z2.``: the level and the row's
+        other axis repeat)."""
         self.seen: list[Seen] = []
         """The one-word lines of the moves since the last move that had no ``before`` (a hole's first), by
         their place among them: the next hole's moves are the same lines in the same places, found by a compare
@@ -160,7 +161,7 @@ class ExpansionMoves(MoveLane):
             else:
                 text = self._one_word(code, feeding, last, last_slot, last_value)
         else:
-            words = [code]
+            text = code
             for axis, value in axes.items():
                 if not isinstance(value, float):
                     return None  # (none: tested above, before a word was spelt)
@@ -174,8 +175,8 @@ class ExpansionMoves(MoveLane):
                     was = None if before is None else before.get(axis)
                     write = not (type(was) is float and was == value)
                 if write:
-                    words.append(axis + self._word(writer, block, axis, value, as_written))
-            text = " ".join(words) + "\n"
+                    text += self._word(writer, block, axis, value, as_written)
+            text += "\n"
         if other:
             self.last = None
         else:
@@ -210,25 +211,28 @@ class ExpansionMoves(MoveLane):
         if units != self.units:
             self._forget(units)
         as_written = block.canonical and writer.source_numbers
-        if written == 1:
-            axis, slot, value = ("X", 0, x) if write_x else ("Y", 1, y) if write_y else ("Z", 2, z)
-            if writer.rounding or writer.carry or (as_written and _has_word(block, axis)):
-                text = f"{code} {axis}{self._number(writer, block, axis, value, as_written)}\n"
-            else:
-                text = self._one_word(code, feeding, axis, slot, value)
-        else:
-            words = [code]
-            if write_x:
-                words.append("X" + self._word(writer, block, "X", x, as_written))
-            if write_y:
-                words.append("Y" + self._word(writer, block, "Y", y, as_written))
+        if written == 1:  # (no tuple of the one word's axis, slot and number: a branch each)
             if write_z:
-                words.append("Z" + self._word(writer, block, "Z", z, as_written))
-            text = " ".join(words) + "\n"
+                text = self._single(writer, block, code, feeding, "Z", 2, z, as_written)
+            elif write_x:
+                text = self._single(writer, block, code, feeding, "X", 0, x, as_written)
+            else:
+                text = self._single(writer, block, code, feeding, "Y", 1, y, as_written)
+        else:  # (one string built of its parts, spelt in X, Y, Z order: no list to join)
+            text = (f"{code}{self._word(writer, block, 'X', x, as_written) if write_x else ''}"
+                    f"{self._word(writer, block, 'Y', y, as_written) if write_y else ''}"
+                    f"{self._word(writer, block, 'Z', z, as_written) if write_z else ''}\n")
         self.last = item.axes
         self.at_x, self.at_y, self.at_z = x, y, z
         self.has_x = self.has_y = self.has_z = True
         return text
+
+    def _single(self, writer: WordWriter, block: Block, code: str, feeding: bool, axis: str, slot: int,
+                value: float, as_written: bool) -> str:
+        """The line of a move that writes one word, an X, Y or Z (``slot`` 0, 1, 2) at ``value``."""
+        if writer.rounding or writer.carry or (as_written and _has_word(block, axis)):
+            return f"{code} {axis}{self._number(writer, block, axis, value, as_written)}\n"
+        return self._one_word(code, feeding, axis, slot, value)
 
     def _one_word(self, code: str, feeding: bool, axis: str, slot: int, value: float) -> str:
         """The line of a move that writes one word, an X, Y or Z at ``value``, where spelling it changes nothing
@@ -264,14 +268,15 @@ class ExpansionMoves(MoveLane):
         self.seen.clear()
 
     def _word(self, writer: WordWriter, block: Block, axis: str, value: float, as_written: bool) -> str:
-        """``_number``, from ``numbers`` where spelling it changes nothing of the writer (as ``lines``)."""
+        """A word of a line, with the space before it (`` X6.35``): its number ``_number``'s, the word from
+        ``numbers`` where spelling it changes nothing of the writer (as ``lines``)."""
         slot = 0 if axis == "X" else 1 if axis == "Y" else 2 if axis == "Z" else -1
         if writer.rounding or writer.carry or slot < 0 or (as_written and _has_word(block, axis)):
-            return self._number(writer, block, axis, value, as_written)
+            return f" {axis}{self._number(writer, block, axis, value, as_written)}"
         numbers = self.numbers[slot]
         text = numbers.get(value)
         if text is None:
-            text = _position(writer, axis, value, False)
+            text = f" {axis}{_position(writer, axis, value, False)}"
             if not writer.carry:
                 _keep(numbers, value, text)
         return text

@@ -74,6 +74,10 @@ class Motion(Section):
 
 
 
+_NOTHING: list[Section] = []
+"""The items a lazy motion is built with, replaced at once (never read, never changed)."""
+
+
 @mypyc_attr(allow_interpreted_subclasses=True)
 class CompoundMotion(Section):
     """The explicit motion a construct stands for (a canned cycle's rapids, feeds, dwells, spindle
@@ -97,13 +101,15 @@ class CompoundMotion(Section):
         """The moves' end (``point_after.compound_end``: read only), once ``ended``."""
         self.ended = False
 
-    @classmethod
-    def lazy(cls, term: str, make: Callable[[], list[Section]]) -> "CompoundMotion":
+    @staticmethod
+    def lazy(term: str, make: Callable[[], list[Section]]) -> "CompoundMotion":
         """The motion made only when something reads it: a target that keeps the construct native (a
         Fanuc cycle written as a Fanuc cycle) never pays for its expansion. ``make`` raises the located
-        error the expansion finds, at the first reading."""
-        motion = cls(term, [])
-        motion._items, motion._make = None, make
+        error the expansion finds, at the first reading. (A static method: compiled, a class method's
+        ``cls(...)`` is a generic call of the class, a constructor named is a native one.)"""
+        motion = CompoundMotion(term, _NOTHING)
+        motion._items = None
+        motion._make = make
         return motion
 
     @property
