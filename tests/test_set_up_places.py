@@ -21,21 +21,11 @@ from postproc.reading import read_blocks
 from postproc.setup.machine_setup import MachineSetup, load_setup
 from postproc.setup.work_offsets import set_up_places
 from postproc.context import Context
+from tests.test_arc_set_up_start import SETUP as ARC_SET_UP
 
-SETUP = """<?xml version="1.0" encoding="UTF-8"?>
-<MachineSetup name="t">
-  <Axes>
-    <Axis name="X" home="-100."/>
-    <Axis name="Y" home="0."/>
-    <Axis name="Z" home="0."/>
-  </Axes>
-  <WorkOffsets>
-    <Offset number="0" x="10."/>
-    <Offset number="1" x="-150." y="0." z="0."/>
-    <Offset number="2" x="-95." y="0." z="0."/>
-  </WorkOffsets>
-</MachineSetup>
-"""
+SETUP = ARC_SET_UP.replace("<WorkOffsets>\n", '<WorkOffsets>\n    <Offset number="0" x="10."/>\n')
+"""``tests.test_arc_set_up_start``'s set-up (X home -100, Y and Z home 0; G54 X-150 Y0 Z0, G55 X-95 Y0 Z0) with an
+external offset X10."""
 
 
 @pytest.fixture(scope="module")
