@@ -11,11 +11,13 @@ X-150, G55 X-95, an external offset of X10 (machine coordinates, mm): work = mac
 
 from __future__ import annotations
 
+import copy
 import io
 
 import pytest
 
 from postproc.errors import Diagnostics, ErrorLevel
+from postproc.ir.state import ModalState
 from postproc.plugins import default_registry
 from postproc.reading import read_blocks
 from postproc.setup.machine_setup import MachineSetup, load_setup
@@ -113,3 +115,16 @@ def test_a_reading_without_the_places_leaves_every_such_position_unknown(setup: 
     assert ctx.state.places is None
     assert ctx.state.position == {"X": None, "Y": None, "Z": None}
 
+
+
+def test_a_copy_of_the_state_follows_the_same_places(setup: MachineSetup) -> None:
+    """A dry run reads from a copy of the reading's state (``postproc.api``: ``copy.deepcopy``): the copy has the
+    places (compiled too: a native class copies only where it allows interpreted subclasses), and ending the
+    following in it leaves the original's."""
+    state = ModalState()
+    state.places = set_up_places(setup)
+    twin = copy.deepcopy(state)
+    assert twin.places is not None and state.places is not None
+    assert (twin.places.homes, twin.places.offsets) == (state.places.homes, state.places.offsets)
+    twin.places = None
+    assert state.places is not None
