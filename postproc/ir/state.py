@@ -26,9 +26,6 @@ PLACED_AXES: Final = ("X", "Y", "Z")
 """The linear axes ``SetUpPlaces`` follows (an arc's plane is two of them)."""
 PLACED_LENGTH_AXIS: Final = "Z"
 """The axis a tool length offset acts on (a mill's): not placed while one is in force."""
-_SETS_FRAME: Final = frozenset(("CoordinateSet", "FrameChange"))
-"""Sections after which the frame holds values only the run knows: ``SetUpPlaces`` no longer applies (nor after a
-``DataSetting`` of a work offset, ``G10 L2``/``L20``; a tool table's entry changes no work position)."""
 
 PLANE_AXES = {"XY": ("X", "Y", "Z"), "ZX": ("Z", "X", "Y"), "YZ": ("Y", "Z", "X")}
 """Per plane: first and second plane axis, then the axis normal to the plane (the drilling axis)."""
@@ -159,14 +156,18 @@ def _known(value: Any) -> Any:
 def _work_offset_change(state: ModalState, sections: Mapping[str, Any]) -> dict[str, float] | None:
     """Before a block, while the state follows the set-up's places: the machine position (mm) of each axis whose
     work position and old offset are known, where the block changes the work system (``place`` puts them in the
-    new one after it); None where it does not. A block that sets the frame itself ends the following."""
+    new one after it); None where it does not. A block that sets the frame itself (a frame command, a coordinate
+    setting, a ``DataSetting`` of a work offset, ``G10 L2``/``L20``; a tool table's entry changes no work position)
+    ends the following: the frame then holds values only the run knows."""
     setting = sections.get("DataSetting")
-    if not _SETS_FRAME.isdisjoint(sections) or (
+    if "FrameChange" in sections or "CoordinateSet" in sections or (
             setting is not None and str(getattr(setting, "table", "")).startswith("work_offset")):
         state.places = None
         return None
     work = sections.get("WorkOffset")
-    index = getattr(work, "index", None)
+    if work is None:  # (most blocks: no ``getattr`` of None, whose error compiled code makes and drops)
+        return None
+    index = work.index
     places = state.places
     if not isinstance(index, int) or index == state.work_offset or places is None:
         return None
