@@ -11,7 +11,7 @@ from . import native
 native.install()  # the compiled hot path, before any of its modules is imported
 
 from .geometry.arc_end import SPIRAL, TARGET_ARC_END, UNKNOWN_START_TARGET
-from .syntaxes.set_up_positions import install as follow_set_up_positions
+from .setup.work_offsets import set_up_places
 from .lowering.feed_first import check_blocks
 from .interp.control import GotoLabel
 from .dialect import Dialect
@@ -86,7 +86,8 @@ def _translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, tar
             ctx.run_data[POINT_BY_POINT_KEY] = options.active()
             if src.NAME != dst.NAME:  # (a copy runs as its source does, wherever the machine stands)
                 ctx.run_data[UNKNOWN_START_TARGET] = dst.NAME
-                follow_set_up_positions(ctx, setup)  # (where the set-up places it, the start is known)
+                if not ctx.lathe:  # (where the set-up places it, the start is known; a lathe is not followed)
+                    ctx.state.places = set_up_places(setup)
             target_rule = dst.arc_end_rule(setup)
             if arcs is None and ctx.arc_end.runs == SPIRAL and not target_rule.covers(ctx.arc_end):
                 # (a source that moves the centre has its arcs written about the moved one: settle_arc_ends)

@@ -1,5 +1,5 @@
 """An arc after a reference return, a move in machine coordinates or a change of work system, whose start the
-set-up places (``postproc.syntaxes.set_up_positions``).
+set-up places (``ModalState.places``: ``postproc.ir.state.SetUpPlaces``).
 
 Before, the reading left the start unknown after ``G28``/``G53``/``G55`` and a translation to another dialect
 refused every such arc with an absolute end in its plane ("a start whose X is unknown"), even where the set-up

@@ -75,6 +75,33 @@ def test_fanuc_length_offset_becomes_g43_1_before_its_motion(source: str, writte
     assert report.ok and report.max_deviation == 0, report.summary()
 
 
+@pytest.mark.parametrize("source, written", [
+    # the register written in inches (G10 L10 P3 R1. under G20: 25.4 mm), read under G21: 25.4 mm
+    ("G20 G90\nG10 L10 P3 R1.\nG21\nG43 H3 Z50.\n", "G43.1 Z25.4"),
+    # ... and read back in inches, after a block of millimetres between: 1 in
+    ("G20 G90\nG10 L10 P3 R1.\nG21\nG0 X1.\nG20\nG43 H3 Z2.\n", "G43.1 Z1."),
+    # inches, then millimetres before the offset: the set-up's 42.5 mm as it stands
+    ("G20 G90\nG0 X1.\nG21\nG43 H3 Z50.\n", "G43.1 Z42.5"),
+])
+def test_the_units_in_force_where_the_step_reads_a_register_or_writes_a_length(source: str, written: str) -> None:
+    """The step follows the units of every block before the one it changes (``UnitsAndDistance``)."""
+    setup = _setup({3: 42.5})
+    out, warned = _to_grbl(source, setup)
+    assert written in out.splitlines() and warned == ""
+    report = verify_lines(io.StringIO(source).readlines(), io.StringIO(out).readlines(), file_in="t.nc",
+                          file_out="t.gcode", source="fanuc", target="grbl", setup=setup)
+    assert report.ok and report.max_deviation == 0, report.summary()
+
+
+def test_the_power_on_units_count_for_the_length() -> None:
+    """A machine that powers on in inches (``<Controller startUnits="inch">``): the program's first block gets
+    them (``postproc.syntaxes.power_on_units``), so 42.5 mm is written 42.5 / 25.4 = 1.67322835 in."""
+    setup = _setup({3: 42.5})
+    setup.controller.start_units = "inch"
+    out, _ = _to_grbl("G90\nG43 H3 Z2.\n", setup)
+    assert "G43.1 Z1.67322835" in out.splitlines()
+
+
 def test_a_set_up_in_inches_gives_lengths_in_inches() -> None:
     out, _ = _to_grbl("G21 G90\nG43 H1 Z50.\n", _setup({1: 2.0}, units="inch"))
     assert "G43.1 Z50.8" in out.splitlines()  # 2 in of the set-up, written in the program's mm

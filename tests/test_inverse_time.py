@@ -108,3 +108,30 @@ def test_what_cannot_be_converted_exactly_is_a_located_error(name: str) -> None:
         translate(io.StringIO(source, newline=""), io.StringIO(), file="t.ngc", source="linuxcnc", target="fanuc",
                   setup=ROTARY)
     assert str(info.value.errors[0]).startswith(message), str(info.value.errors[0])
+
+
+INCH_AT_POWER_ON = MachineSetup()
+INCH_AT_POWER_ON.controller.start_units = "inch"
+"""A machine that powers on in inches (``<Controller startUnits="inch">``): a program without G20/G21 runs in inches."""
+
+
+@pytest.mark.parametrize(("text", "setup", "feeds"), [
+    # G91 before the first block the step changes: 3-4-5 in 1/2 min (10 mm/min), then the same increment in 1 min
+    ("G21 G90 G17\nG0 X0 Y0 Z0\nG91\nG93 G1 X3 Y4 F2\nG1 X3 Y4 F1\nM2\n", MachineSetup(), [10.0, 5.0]),
+    # G20 and G91 before it: the same numbers in inches (25.4 mm each); back to G90: X0 Y0 from (6, 8) in, 10 in
+    # in 1/2 min
+    ("G20 G90 G17\nG0 X0 Y0 Z0\nG91\nG93 G1 X3 Y4 F2\nG1 X3 Y4 F1\nG90 G1 X0 Y0 F2\nM2\n", MachineSetup(),
+     [254.0, 127.0, 508.0]),
+    # the machine's power-on units (the program programs none): inches, 10 in/min
+    ("G90 G17\nG0 X0 Y0 Z0\nG93 G1 X3 Y4 F2\nM2\n", INCH_AT_POWER_ON, [254.0]),
+])
+def test_the_units_and_distance_mode_before_the_converted_move(text: str, setup: MachineSetup,
+                                                               feeds: list[float]) -> None:
+    out = io.StringIO(newline="")
+    translate(io.StringIO(text, newline=""), out, file="t.ngc", source="linuxcnc", target="fanuc", setup=setup)
+    got = [e["f"] for e in toolpath_events(io.StringIO(out.getvalue(), newline=""), file="t.nc", dialect="fanuc",
+                                           setup=setup) if e.get("move") == "feed"]
+    assert got == pytest.approx(feeds, rel=1e-9), (got, out.getvalue())
+    report = verify_lines(io.StringIO(text, newline=""), io.StringIO(out.getvalue(), newline=""), file_in="a",
+                          file_out="b", source="linuxcnc", target="fanuc", setup=setup)
+    assert report.ok, report.summary()

@@ -18,10 +18,10 @@ from postproc.compensation.tool_table import ToolTable
 from postproc.context import Context
 from postproc.errors import UnsupportedError
 from postproc.ir.expr import Expr
-from postproc.ir import Block, CompoundMotion, DistanceMode, Motion, ToolSelect, Units
+from postproc.ir import Block, CompoundMotion, Motion, ToolSelect
 from postproc.ir.lathe_sections import CoordinateSet
+from postproc.lowering.units_and_distance import UnitsAndDistance
 
-MM_PER_INCH = 25.4
 _PLAIN = frozenset(("rapid", "linear", "cw", "ccw"))
 AXES = ("X", "Z")
 
@@ -45,8 +45,8 @@ class LatheOffsets:
         """mm: what the offset in force adds (X a radius)."""
         self.waiting = False
         """A new offset takes effect with the next move (both axes then)."""
-        self.inch = False
-        self.incremental = False
+        self.modes = UnitsAndDistance()
+        """The units and the distance mode of the blocks so far (``block`` takes every block)."""
 
     def select(self, block: Block, select: object) -> None:
         """A turret index (``select``, as the source wrote it): its offset number's X and Z from the set-up,
@@ -68,12 +68,7 @@ class LatheOffsets:
     def block(self, block: Block, where: Where) -> None:
         """Add the offset to the block's X and Z (after the tracker made them absolute and X a radius)."""
         sections = block.sections
-        units = sections.get("Units")
-        if isinstance(units, Units):
-            self.inch = units.system == "inch"
-        mode = sections.get("DistanceMode")
-        if isinstance(mode, DistanceMode):
-            self.incremental = mode.mode == "incremental"
+        self.modes.follow(sections)
         coords = sections.get("CoordinateSet")
         if isinstance(coords, CoordinateSet) and self._active():
             sections["CoordinateSet"] = CoordinateSet(self._shifted(block, dict(coords.axes)))
@@ -85,7 +80,7 @@ class LatheOffsets:
             if motion.mode not in _PLAIN:
                 raise UnsupportedError("a reference return with a lathe tool offset in force on a target that has "
                                        "none (cancel the offset first: T..00)", self.ctx.at(block))
-            if self.incremental:
+            if not self.modes.absolute:
                 if self.waiting:
                     raise UnsupportedError("an incremental move takes a new lathe tool offset here, which the target "
                                            "has no way to apply: program X and Z absolutely", self.ctx.at(block))
@@ -123,7 +118,7 @@ class LatheOffsets:
             axes[axis] = value / 2.0 if axis == "X" and self.radius else value
 
     def _shifted(self, block: Block, axes: dict[str, float | Expr]) -> dict[str, float | Expr]:
-        scale = MM_PER_INCH if self.inch else 1.0
+        scale = self.modes.scale
         out = dict(axes)
         for axis in AXES:
             value = out.get(axis)

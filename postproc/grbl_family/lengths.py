@@ -33,9 +33,10 @@ from postproc.context import Context
 from postproc.dialect import Dialect
 from postproc.grbl_family.dialect import GrblFamily
 from postproc.errors import PostprocError, UnsupportedError
-from postproc.ir import Block, Comments, DataSetting, Section, ToolLengthOffset, Units
+from postproc.ir import Block, Comments, DataSetting, Section, ToolLengthOffset
 from postproc.ir.keys import watches_none
 from postproc.lowering.lower import BlockStep, LoweringStep
+from postproc.lowering.units_and_distance import UnitsAndDistance
 
 MM_PER_INCH: Final = 25.4
 _WATCHED: Final = frozenset(("ToolLengthOffset", "DataSetting", "Units"))
@@ -66,26 +67,26 @@ class _Lengths(BlockStep):
         self.ctx = ctx
         self.modes = modes
         self.table = ToolTable(ctx.setup)
-        self.inch = False  # every controller here powers on in mm (``ModalState``), as the simulation starts
+        self.units = UnitsAndDistance()
+        """The units in force (the step takes every block with units: ``_WATCHED``; it reads no distance mode)."""
 
     def take(self, block: Block) -> list[Block] | None:
         sections = block.sections
         if watches_none(sections, _WATCHED):
             return None
-        before = self.inch
-        units = sections.get("Units")
-        if isinstance(units, Units):
-            self.inch = units.system == "inch"
+        units = self.units
+        before = units.inch
+        units.follow(sections)
         setting = sections.get("DataSetting")
         if isinstance(setting, DataSetting):
-            self.table.write(setting, MM_PER_INCH if self.inch else 1.0)
+            self.table.write(setting, units.scale)
         offset = sections.get("ToolLengthOffset")
         if not isinstance(offset, ToolLengthOffset) or offset.mode not in self.modes:
             return None
         ctx = self.ctx
         at = ctx.at(block, ctx.column_of(block, "H"))  # before the block is rewritten (a rare block)
         try:
-            return _dynamic(block, ctx, self.table, offset, self.inch, before)
+            return _dynamic(block, ctx, self.table, offset, units.inch, before)
         except PostprocError as err:
             ctx.diagnostics.error(err.located(at))
             return []

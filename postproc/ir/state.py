@@ -22,6 +22,11 @@ LEFT_START: Final = "state.left_start"
 """``ModalState.extra`` key: a move the reading cannot place (a reference return, a machine-coordinate move)
 has taken the machine from its start (``postproc.frames.parameters``' reads at the start)."""
 
+PLACED_AXES: Final = ("X", "Y", "Z")
+"""The linear axes ``SetUpPlaces`` follows (an arc's plane is two of them)."""
+PLACED_LENGTH_AXIS: Final = "Z"
+"""The axis a tool length offset acts on (a mill's): not placed while one is in force."""
+
 PLANE_AXES: Final = {"XY": ("X", "Y", "Z"), "ZX": ("Z", "X", "Y"), "YZ": ("Y", "Z", "X")}
 """Per plane: first and second plane axis, then the axis normal to the plane (the drilling axis). ``Final``:
 compiled, a read is a C static's, not a look-up in the module's globals (the cycle expansion reads it every block)."""
@@ -36,6 +41,40 @@ class CycleState:
     words: dict[str, float | int] = field(default_factory=dict)
     initial: float | None = None
     """Initial level on the drilling axis when the cycle was first commanded."""
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+@dataclass(slots=True)
+class SetUpPlaces:
+    """Where the set-up puts the tool after a move the program text does not place, for a translation's reading.
+
+    A reference return (``G28``), a move in machine coordinates (``G53``) and a change of work system (``G55``)
+    leave the reading's position unknown: the work position then depends on the machine's reference positions and
+    work offsets. A translation to another dialect refuses an arc whose shape depends on such an unknown start
+    (``postproc.syntaxes.modal_state._refuse_unknown_start``): its controller checks the radius from wherever the
+    machine stands. Where the set-up declares those values (``<Axes><Axis home>``, ``<WorkOffsets>``), the
+    simulator takes the tool there (``postproc.simulate.simulator``: ``machine_to_frame``), and so does the
+    reading's state (``ModalState.places``):
+
+        work position = machine position - (offset of the active work system + external offset)
+
+    with the machine position the declared home (a first reference return), the block's machine word (a move in
+    machine coordinates under absolute distance), or the work position before a change of work system plus the old
+    offsets. Only declared values count, as in ``postproc.lowering.machine_positions`` (issue 26: a guess cannot be
+    seen by ``verify``, whose two sides would share it). What the set-up does not give, a tool length offset in
+    force on the axis (the programmed point is the controlled point less the length), a second reference return,
+    and any offset or frame the program sets (``G10``, ``G92``, a frame command: values the run holds) leave the
+    axis unknown. A lathe (diameters, U/W increments, tool offsets) is not followed.
+
+    Data the state reads where it follows those blocks (``_work_offset_change``, ``ModalState.place``, and
+    ``ModalStateSyntax`` at a reference return or machine move), made from the set-up by
+    ``postproc.setup.work_offsets.set_up_places``: no call of a hook at the blocks that change a mode."""
+
+    homes: dict[str, float]
+    """Each followed axis's reference position (machine coordinates, mm), where the set-up gives one."""
+    offsets: dict[int, dict[str, float]]
+    """Machine minus work position (mm) by work system and axis, where the set-up gives the system's offset: its
+    own plus the external one (``postproc.setup.work_offsets.offset_beyond_frame``)."""
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -66,15 +105,38 @@ class ModalState:
     symbolic: bool = False
     """A computed word (an ``Expr`` kept symbolically) was met: positions may be computed, so the steps
     that track them check for one (a straight program never pays for the check)."""
+    places: SetUpPlaces | None = None
+    """The set-up's declared homes and work offsets, where this state follows them (a translation's reading to
+    another dialect on a mill whose set-up declares work offsets: ``postproc.api``); None: the positions those
+    blocks leave stay unknown (every other state). A section the program sets its frame with ends the following."""
 
     def apply(self, sections: Mapping[str, Any]) -> None:
         """Apply a block's modal sections (those that change nothing here are ignored)."""
         if changes_nothing(sections):
             return  # the common block: a move, maybe a block number
+        machine = None if self.places is None else _work_offset_change(self, sections)
         for key, section in sections.items():
             change = _APPLY.get(key)
             if change is not None:
                 change(self, section)
+        if machine is not None:
+            self.place(machine)  # after the whole block: in the new work system, in the block's units
+
+    def place(self, machine: dict[str, float]) -> None:
+        """Put each machine position (mm) in the work frame of the active work system, in program units, on the
+        axes still unknown whose offset the set-up gives (``places``; nothing without it)."""
+        places = self.places
+        if places is None:
+            return
+        offsets = places.offsets.get(self.work_offset)
+        if offsets is None:
+            return
+        scale = MM_PER_INCH if self.units == "inch" else 1.0
+        position = self.position
+        for axis, value in machine.items():
+            offset = offsets.get(axis)
+            if offset is not None and position.get(axis, 0.0) is None:
+                position[axis] = round((value - offset) / scale, 12) + 0.0
 
     def set_units(self, system: str) -> None:
         """Switch units, converting the tracked position (a controller keeps the physical position)."""
@@ -90,6 +152,35 @@ class ModalState:
 def _known(value: Any) -> Any:
     """A number, or None for a computed value (an expression kept symbolically: known only at run time)."""
     return None if isinstance(value, Expr) else value
+
+
+def _work_offset_change(state: ModalState, sections: Mapping[str, Any]) -> dict[str, float] | None:
+    """Before a block, while the state follows the set-up's places: the machine position (mm) of each axis whose
+    work position and old offset are known, where the block changes the work system (``place`` puts them in the
+    new one after it); None where it does not. A block that sets the frame itself (a frame command, a coordinate
+    setting, a ``DataSetting`` of a work offset, ``G10 L2``/``L20``; a tool table's entry changes no work position)
+    ends the following: the frame then holds values only the run knows."""
+    setting = sections.get("DataSetting")
+    if "FrameChange" in sections or "CoordinateSet" in sections or (
+            setting is not None and str(getattr(setting, "table", "")).startswith("work_offset")):
+        state.places = None
+        return None
+    work = sections.get("WorkOffset")
+    if work is None:  # (most blocks: no ``getattr`` of None, whose error compiled code makes and drops)
+        return None
+    index = work.index
+    places = state.places
+    if not isinstance(index, int) or index == state.work_offset or places is None:
+        return None
+    offsets = places.offsets.get(state.work_offset, {})
+    scale = MM_PER_INCH if state.units == "inch" else 1.0
+    machine: dict[str, float] = {}
+    for axis in PLACED_AXES:
+        here = state.position.get(axis)
+        offset = offsets.get(axis)
+        if here is not None and offset is not None:
+            machine[axis] = here * scale + offset
+    return machine
 
 
 def _offset_set(state: ModalState, s: Any) -> None:

@@ -11,10 +11,12 @@ whose G93 is not confirmed in a manual at hand [?]) gets G94 and those feeds (``
 ``per_minute`` turns a toolpath's inverse-time feeds into the same per-minute ones, so ``verify`` compares
 the two programs' feeds.
 
-The conversion needs where each move starts: it follows the moves (absolute, incremental, units, plane)
-and forgets the position at anything else that could move the tool or its frame (a reference return, a
-machine-coordinate move, a work offset or coordinate setting, an expanded cycle, a verbatim code); an
-inverse-time move from an unknown point, and one that turns a rotary axis (its per-minute feed means
+The conversion needs where each move starts: it follows the moves (absolute, incremental, units: the lowering's
+one tracker, ``postproc.lowering.units_and_distance``; plane) from the reading's state at the program start (the
+step starts before the first block is read: a lathe's ZX plane, a start in another feed mode or in the machine's
+power-on units hold there) and forgets the position at anything else that could move the tool or its frame (a
+reference return, a machine-coordinate move, a work offset or coordinate setting, an expanded cycle, a verbatim
+code); an inverse-time move from an unknown point, and one that turns a rotary axis (its per-minute feed means
 another speed on each controller), are located errors.
 """
 
@@ -30,7 +32,8 @@ from ..errors import UnsupportedError
 from ..ir.expr import Expr
 from ..geometry.arcs import arc_sweep
 from ..ir import Block, Feed, FeedMode, Motion
-from ..ir.state import MM_PER_INCH, PLANE_AXES
+from ..ir.state import PLANE_AXES
+from .units_and_distance import UnitsAndDistance
 
 LINEAR: Final = ("X", "Y", "Z")
 ROTARY: Final = frozenset("ABCUVW")
@@ -68,8 +71,9 @@ def convert_inverse_time(blocks: Iterator[Block], ctx: Context, target: type[Dia
 
 
 def _convert(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
-    state = ctx.state
-    units, distance, plane = state.units, state.distance, state.plane
+    state = ctx.state  # (the program's start: no block is read yet)
+    modes = UnitsAndDistance(state.units == "inch", state.distance != "incremental")
+    plane = state.plane
     inverse = state.feed_mode == "inverse_time"
     position: dict[str, float] | None = None  # mm, X Y Z; None: not known
     for block in blocks:
@@ -78,12 +82,7 @@ def _convert(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> It
             yield block
             continue
         get = sections.get
-        s = get("Units")
-        if s is not None:
-            units = s.system  # type: ignore[attr-defined]
-        s = get("DistanceMode")
-        if s is not None:
-            distance = s.mode  # type: ignore[attr-defined]
+        modes.follow(sections)
         s = get("Plane")
         if s is not None:
             plane = s.plane  # type: ignore[attr-defined]
@@ -93,7 +92,7 @@ def _convert(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> It
             if inverse:
                 sections["FeedMode"] = FeedMode("per_min")
                 block.changed()
-        scale = MM_PER_INCH if units == "inch" else 1.0
+        scale = modes.scale
         motion = get("Motion")
         if any(key not in _KEEPS_POSITION and not _inert(sections, key) for key in sections) or (
                 isinstance(motion, Motion) and (motion.mode not in ("rapid", "linear", "cw", "ccw")
@@ -109,7 +108,7 @@ def _convert(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> It
         if not isinstance(motion, Motion) or motion.mode is None:
             yield block
             continue
-        end = _end(motion, position, distance == "incremental", scale)
+        end = _end(motion, position, not modes.absolute, scale)
         if inverse and motion.mode in FEED_MOVES:
             try:
                 feed = _feed(ctx, block, target, motion, position, end, plane, scale)

@@ -1,11 +1,13 @@
 """The units and the distance mode in force where a lowering step stands: the one tracker the steps that convert a
 length or read a position by them follow (a block's ``Units`` and ``DistanceMode`` sections), where each had its own
 copy of the same lines (the tool length timing, the machine positions, the sideways offsets, the cutter resolver,
-an ISG-family target's tool data).
+an ISG-family target's tool data, a grbl-family target's tool lengths, a lathe's tool offsets written into the
+coordinates, the inverse-time feeds).
 
 Each step holds its own tracker: a step sees the blocks as the steps before it leave them (a resolved cutter
 compensation stretch adds its own G90/G91), so the modes in force are the step's. A program starts in millimetres
-and absolute, as ``ModalState`` and the simulation start.
+and absolute, as ``ModalState`` and the simulation start, unless the step says otherwise (the inverse-time feeds
+start from the reading's state at the program start, with its plane and feed mode: ``postproc.lowering.inverse_time``).
 """
 
 from __future__ import annotations
@@ -23,12 +25,12 @@ MM_PER_INCH: Final = 25.4
 class UnitsAndDistance:
     """The units (``inch``) and the distance mode (``absolute``) the blocks followed so far leave in force."""
 
-    def __init__(self) -> None:
-        self.inch = False
+    def __init__(self, inch: bool = False, absolute: bool = True) -> None:
+        self.inch = inch
         """Inches in force (else millimetres)."""
-        self.absolute = True
+        self.absolute = absolute
         """Absolute positions in force (G90; else increments, G91)."""
-        self.scale = 1.0
+        self.scale = MM_PER_INCH if inch else 1.0
         """Millimetres per program unit."""
 
     def absolute_in(self, sections: dict[str, Section]) -> bool:

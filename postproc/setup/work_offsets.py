@@ -11,6 +11,7 @@ cancel), which is why it stands with the set-up, below both.
 
 from __future__ import annotations
 
+from ..ir.state import PLACED_AXES, SetUpPlaces
 from .machine import ROTARY_AXES
 from .machine_setup import MachineSetup
 
@@ -42,3 +43,22 @@ def offset_beyond_frame(axis: str, system: int, programmed: dict[int, dict[str, 
                           f"number=\"{number}\" {axis.lower()}=...>) and the program sets none")
         total += value or 0.0
     return total, ""
+
+
+def set_up_places(setup: MachineSetup) -> SetUpPlaces | None:
+    """The set-up's homes and work offsets as a translation's reading follows them (``SetUpPlaces``), where it
+    declares work offsets: every placed position needs the active system's (a home alone places nothing). Else
+    None, and the reading pays nothing (the bench machine declares a Z home and no offsets)."""
+    if not setup.work_offsets:
+        return None
+    mm = setup.machine.mm()
+    homes = {a: t.home * mm for a, t in setup.travel.items() if a in PLACED_AXES and t.home is not None}
+    declared = declared_offsets(setup, PLACED_AXES, False)
+    offsets: dict[int, dict[str, float]] = {}
+    for system in declared:
+        offsets[system] = {}
+        for axis in PLACED_AXES:
+            offset = offset_beyond_frame(axis, system, {}, declared)[0]
+            if offset is not None:
+                offsets[system][axis] = offset
+    return SetUpPlaces(homes, offsets)

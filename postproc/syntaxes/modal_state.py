@@ -25,11 +25,11 @@ from postproc.ir.event_order import MOVING, after_motion
 from postproc.geometry.arcs import ARC_TOLERANCE_MM, PLACES
 from postproc.ir.expr import Expr
 from postproc.ir import Block, Motion
-from postproc.ir.state import LEFT_START, MM_PER_INCH, MODAL_KEYS, PLANE_AXES
+from postproc.ir.state import (LEFT_START, MM_PER_INCH, MODAL_KEYS, PLACED_AXES, PLACED_LENGTH_AXIS, PLANE_AXES,
+                                ModalState, SetUpPlaces)
 from postproc.context import Context
 from postproc.syntaxes.syntax import Syntax
 from postproc.syntaxes.power_on_units import KEY as _POWER_ON_UNITS, take_power_on_units
-from postproc.syntaxes.set_up_positions import KEY as _SET_UP_POSITIONS, SetUpPositions
 
 _CONTROL: Final = CONTROL
 _ASSIGN: Final = ASSIGN
@@ -65,11 +65,7 @@ class ModalStateSyntax(Syntax):
                     quiet = False
                     break
         if not quiet:
-            extra = state.extra
-            if extra and _SET_UP_POSITIONS in extra:  # (a translation whose set-up places the tool: rare blocks)
-                cast(SetUpPositions, extra[_SET_UP_POSITIONS]).apply(state, sections, ctx)
-            else:
-                state.apply(sections)  # (which passes a block of constructs only at once)
+            state.apply(sections)  # (which passes a block of constructs only at once)
             if not state.computes and (_CONTROL in sections or _ASSIGN in sections):
                 state.computes = True
         if motion is not None:
@@ -129,11 +125,10 @@ class ModalStateSyntax(Syntax):
         if machine or mode == "home" or mode == "home2":
             for axis in motion.axes:
                 pos[axis] = None
-            extra = state.extra
-            positions = extra.get(_SET_UP_POSITIONS)
-            if positions is not None:  # the set-up may place the tool there (``set_up_positions``)
-                cast(SetUpPositions, positions).moved(state, motion, machine, ctx)
-            extra[LEFT_START] = True
+            places = state.places
+            if places is not None:  # the set-up may place the tool there (``ModalState.places``)
+                state.place(_machine_ends(state, places, motion, machine))
+            state.extra[LEFT_START] = True
             return
         incremental = state.distance == "incremental"
         store = cast("dict[str, object]", pos)
@@ -148,6 +143,26 @@ class ModalStateSyntax(Syntax):
                 pos[axis] = None if old is None else old + cast(float, value)
             else:
                 store[axis] = value
+
+
+def _machine_ends(state: ModalState, places: SetUpPlaces, motion: Motion, machine: bool) -> dict[str, float]:
+    """Where a reference return or a move in machine coordinates (``machine``) leaves the tool on each axis the
+    set-up places (machine coordinates, mm): the block's machine word under absolute distance, or the declared
+    home after a first reference return. Not an axis a tool length offset acts on while one is in force (the
+    programmed point is the controlled point less a length only the run may know)."""
+    ends: dict[str, float] = {}
+    scale = MM_PER_INCH if state.units == "inch" else 1.0
+    for axis, value in motion.axes.items():
+        if axis not in PLACED_AXES or axis == PLACED_LENGTH_AXIS and state.length != "cancel":
+            continue
+        if machine:
+            if state.distance != "incremental" and type(value) is float:
+                ends[axis] = value * scale
+        elif motion.mode == "home":
+            home = places.homes.get(axis)
+            if home is not None:
+                ends[axis] = home
+    return ends
 
 
 _FEED_MOTION: Final = frozenset(("linear", "cw", "ccw", "thread"))

@@ -70,7 +70,7 @@ def machine_state(setup: MachineSetup) -> str:
     to (``<Axes><Axis home>``, rs274's #5161-#5163, in its machine unit, inches [V: rs274 reads #5161=-100 as
     -2540 mm]) and the work offsets of G54-G59 (``<WorkOffsets>``, by ``G10 L2``, in mm). Empty without them
     (rs274's own: every one zero). The translation's reading and the simulator take the tool there
-    (``postproc.syntaxes.set_up_positions``), so the program is run where they say it runs."""
+    (``postproc.ir.state.SetUpPlaces``), so the program is run where they say it runs."""
     mm = setup.machine.mm()
     lines = [f"#{5161 + 'XYZ'.index(a)}=[{t.home * mm!r}/25.4]" for a, t in sorted(setup.travel.items())
              if a in "XYZ" and t.home is not None]
