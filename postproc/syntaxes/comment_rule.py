@@ -11,11 +11,14 @@ from __future__ import annotations
 import re
 from typing import Callable, Final
 
+from mypy_extensions import mypyc_attr
+
 _BREAKS: Final = dict.fromkeys((*range(0x20), 0x7F, 0x85, 0x2028, 0x2029), " ")
 """Line breaks and control characters (each made a space, ``str.translate``): a line break ends a ``;`` comment
 and a block. A table, not a regular expression compiled at every start (~0.5M instructions)."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class CommentRule:
     """The working of one ``CommentSyntax``: its ``parens``, its ``clean`` and its active ``words``."""
 
