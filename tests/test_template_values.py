@@ -149,7 +149,7 @@ def test_grbl_writes_no_real_time_character_from_grbl_itself(tmp_path: Path) -> 
 @settings(max_examples=300, deadline=None)
 @given(value=st.text(max_size=30), head=st.sampled_from(["", "V ", " "]), comments=st.sampled_from([
     CommentSyntax(), CommentSyntax(nested=True, semicolon=True), CommentSyntax(parens=False, semicolon=True),
-    CommentSyntax(semicolon=True, active=re.compile(r"[ \t]*(MSG|LOGOPEN)\b", re.IGNORECASE))]))
+    CommentSyntax(semicolon=True, active_words=("MSG", "LOGOPEN"))]))
 def test_a_sealed_value_is_inside_one_passive_comment(value: str, head: str, comments: CommentSyntax) -> None:
     """Property: whatever the value, the sealed line is one comment from its first character to its end
     (nothing outside it, no line break), and not one the controller acts on."""

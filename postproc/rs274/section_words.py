@@ -19,6 +19,8 @@ from ..ir.expr import Binary, Expr, Num
 from ..ir import Block, Motion, Section
 from ..ir.verbatim import STORED_WORK_OFFSET
 from ..lowering.machine_functions import RIGID_TAP, foreign_hint, refused_rigid_tap
+from ..syntaxes.comment_rule import CommentRule
+from ..syntaxes.comments import CommentSyntax
 from ..ir.state import MM_PER_INCH
 from .codes import CodeTable
 from .word_numbers import NumberWriter
@@ -47,8 +49,18 @@ class SectionWords(NumberWriter):
     modal-group error): a block that writes a motion code leaves the cancel out, the motion code ends
     the cycle by itself."""
 
+    FOREIGN_COMMENTS: ClassVar[CommentSyntax | None] = None
+    """The syntax another dialect's comment text is written with (``CommentSyntax.comment``: made safe, never a
+    comment the controller acts on, LinuxCNC's ``(MSG,``); None: parentheses become brackets, nothing more."""
+
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
         super().__init__(ctx, source_dialect, target)
+        foreign = self.FOREIGN_COMMENTS
+        self.comment_rule: CommentRule | None = (
+            foreign.rule if foreign is not None and source_dialect != self.DIALECT else None)
+        """How ``comment`` writes a comment's text: the ``FOREIGN_COMMENTS`` syntax's rule where the source is
+        another dialect, chosen once (a comment is written on every expanded hole: no call back into a
+        plugin per comment); None: brackets for parentheses."""
         self.numbers_dropped = False
         """A block number above ``MAX_BLOCK_NUMBER`` was dropped (warned once a run)."""
         self.codes = self.table()
@@ -64,6 +76,9 @@ class SectionWords(NumberWriter):
         return self.CODES
 
     def comment(self, text: str) -> str:
+        rule = self.comment_rule
+        if rule is not None:
+            return rule.comment(text)
         return "(" + text.replace("(", "[").replace(")", "]") + ")"
 
     def comment_line(self, text: str) -> str:

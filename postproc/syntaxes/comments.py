@@ -12,13 +12,11 @@ every value inside a passive one (``postproc.output.template_values``).
 from __future__ import annotations
 
 import re
+from functools import cached_property
 from typing import Callable
 
 from ..records import record
-
-_BREAKS = dict.fromkeys((*range(0x20), 0x7F, 0x85, 0x2028, 0x2029), " ")
-"""Line breaks and control characters (each made a space, ``str.translate``): a line break ends a ``;`` comment
-and a block. A table, not a regular expression compiled at every start (~0.5M instructions)."""
+from .comment_rule import CommentRule
 
 
 @record(frozen=True)  # made at every start (dialect.py): a dataclass's generated methods cost ~0.4 ms
@@ -31,33 +29,29 @@ class CommentSyntax:
     """Parentheses nest inside a comment (otherwise the first ``)`` ends it)."""
     semicolon: bool = False
     """``;`` starts a comment that runs to the end of the line."""
-    active: re.Pattern[str] | None = None
-    """A comment whose text matches is an instruction to the controller, not a comment."""
+    active_words: tuple[str, ...] = ()
+    """A comment whose text starts, after blanks and tabs, with one of these words (in any case, a whole word)
+    is an instruction to the controller, not a comment (``CommentRule.head``)."""
     clean: Callable[[str], str] | None = None
     """Characters the controller acts on even inside a comment, replaced (grbl's real-time commands)."""
 
+    @cached_property
+    def rule(self) -> CommentRule:
+        """The syntax's compiled working (``postproc.syntaxes.comment_rule``), made when first used: every
+        comment made safe goes through it, a word writer's too."""
+        return CommentRule(self.parens, self.active_words, self.clean)
+
     def inside(self, text: str) -> str:
-        """``text`` made safe to stand inside a comment: brackets for parentheses, spaces for line breaks
-        and control characters, then the controller's own cleaning (``clean``). Whether the comment it
-        stands in acts is the whole comment's business (``text``, ``comments``)."""
-        safe = text.replace("(", "[").replace(")", "]")
-        if not safe.isprintable():  # every character ``_BREAKS`` maps is unprintable: the common text skips a
-            safe = safe.translate(_BREAKS)  # translate that looks each character up in the table (~600 each)
-        return self.clean(safe) if self.clean is not None else safe
+        """``text`` made safe to stand inside a comment (``CommentRule.inside``)."""
+        return self.rule.inside(text)
 
     def text(self, text: str) -> str:
-        """``text`` made safe as a whole comment's text: ``inside``, and a ``-`` before a head that would
-        make the comment act (``active``)."""
-        safe = self.inside(text)
-        if self.active is not None and self.active.match(safe):
-            safe = "-" + safe
-        return safe
+        """``text`` made safe as a whole comment's text (``CommentRule.text``)."""
+        return self.rule.text(text)
 
     def comment(self, text: str) -> str:
-        """A whole comment holding ``text`` (safe, as ``text`` makes it): parentheses where they are
-        comments, else a ``;`` comment (which must end its line)."""
-        safe = self.text(text)
-        return f"({safe})" if self.parens else ";" + safe
+        """A whole comment holding ``text`` (``CommentRule.comment``)."""
+        return self.rule.comment(text)
 
     def comments(self, line: str) -> list[tuple[int, int, bool]]:
         """The comments of one written line: (start, end, passive) with ``line[start:end]`` the comment
@@ -84,4 +78,4 @@ class CommentSyntax:
         return found
 
     def _passive(self, text: str) -> bool:
-        return self.active is None or self.active.match(text) is None
+        return not self.rule.acts(text)

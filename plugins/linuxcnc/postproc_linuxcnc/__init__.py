@@ -100,7 +100,7 @@ class Linuxcnc(Dialect):
     """F in a block that changes units is in the old units [V: rs274 prints ``SET_FEED_RATE`` before
     ``USE_LENGTH_UNITS``, its order of execution]."""
     COMMENTS = COMMENTS
-    """``( )`` and ``;`` comments; ``(MSG,`` ``(LOGOPEN,`` ... act (``active_comments.ACTIVE``)."""
+    """``( )`` and ``;`` comments; ``(MSG,`` ``(LOGOPEN,`` ... act (``active_comments.WORDS``)."""
     LINE_RULE = Lazy[LineRule](".lines:LINES")
     """rs274 reads at most 252 bytes a line: a longer comment is shortened (``lines.py``)."""
     LOWERING = (nest_forward_jumps, stops_after_motion, _subprogram_layout, _thread_feed_apart,

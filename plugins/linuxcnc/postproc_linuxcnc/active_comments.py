@@ -9,21 +9,18 @@ comment, however often a loop runs it). Between LinuxCNC programs they are kept 
 
 from __future__ import annotations
 
-import re
-
 from postproc.syntaxes.comments import CommentSyntax
 from postproc.context import Context
 from postproc.dialect import Dialect
 from postproc.ir import Block, Comments
 from postproc.lowering.lower import BlockStep, LoweringStep
 
-ACTIVE = re.compile(r"[ \t]*(MSG|DEBUG|PRINT|LOGOPEN|LOGAPPEND|LOGCLOSE|LOG|PROBEOPEN|PROBECLOSE|ABORT|PY)\b"
-                    r"[ \t]*(,?)", re.IGNORECASE)
-"""The keyword LinuxCNC looks for at the start of a ``( )`` comment (in any case, after blanks) [V: rs274 of
-linuxcnc-uspace 2.9 acts on ``( MSG,`` ``(msg,`` ``(DEBUG,`` ``(PRINT,`` ``(LOG,`` ``(LOGOPEN,``
+WORDS = ("MSG", "DEBUG", "PRINT", "LOGOPEN", "LOGAPPEND", "LOGCLOSE", "LOG", "PROBEOPEN", "PROBECLOSE", "ABORT", "PY")
+"""The keywords LinuxCNC looks for at the start of a ``( )`` comment (in any case, after blanks, a whole word)
+[V: rs274 of linuxcnc-uspace 2.9 acts on ``( MSG,`` ``(msg,`` ``(DEBUG,`` ``(PRINT,`` ``(LOG,`` ``(LOGOPEN,``
 ``(LOGAPPEND,`` ``(LOGCLOSE)``, ``(ABORT,`` (the program stops) and ``(PY,`` (embedded Python); K for
 ``PROBEOPEN``/``PROBECLOSE``, from the LinuxCNC G-code manual]. A ``;`` comment never acts [V]."""
-COMMENTS = CommentSyntax(parens=True, nested=False, semicolon=True, active=ACTIVE)
+COMMENTS = CommentSyntax(parens=True, nested=False, semicolon=True, active_words=WORDS)
 """``( )`` comments, which do not nest (rs274: "Nested comment found" [V]), and ``;`` to the end of the line
 [V]; the active ones above."""
 
@@ -86,16 +83,16 @@ class _Warn(BlockStep):
         comments = block.sections.get("Comments")
         if comments is None:
             return None
-        ctx, warned = self.ctx, self.warned
+        ctx, warned, rule = self.ctx, self.warned, COMMENTS.rule
         for text in comments.texts:  # type: ignore[attr-defined]
-            m = ACTIVE.match(text)
-            if m is None:
+            head = rule.head(text)
+            if head is None:
                 continue
             col = block.text.find("(" + text + ")") + 1 if block.text is not None else 1
             if col < 1 or (block.line, col) in warned:
                 continue  # a ';' comment: not active (a block the program computed has no text: column 1)
             warned.add((block.line, col))
-            key = m.group(1).upper()
+            key = head.upper()
             lost = LOST[key]
             if key in ("DEBUG", "PRINT") and "#" in text:
                 lost = "the parameter values it prints are lost"

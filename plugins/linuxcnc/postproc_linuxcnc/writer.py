@@ -16,7 +16,7 @@
   callee the caller's values there, rs274 0 (``INHERITING_SOURCES``).
 * Work offsets 7-9 are G59.1-G59.3; inverse-time feed is G93; M19 takes its angle as R.
 * A comment from another dialect never becomes an active one: ``( MSG, x)`` read from Fanuc or ISG is
-  written ``(- MSG, x)`` (``active_comments.COMMENTS``); from LinuxCNC it is the program's own.
+  written ``(- MSG, x)`` (``active_comments.COMMENTS``, ``FOREIGN_COMMENTS``); from LinuxCNC it is the program's own.
 * F in a block that changes units is written in the old units (LinuxCNC sets the feed first).
 * Parameters, expressions and o-words (``SPELLING``, ``statement_words``): a computed word is written
   in LinuxCNC's spelling (``X[#1*2.]``), an assignment as ``#1=5.``, a control statement as its o-word
@@ -48,6 +48,7 @@ from postproc.rs274.oword import spell_assignments, spell_oword
 from postproc.rs274.writer import WordWriter
 from postproc.output.line_feeds import LineFeeds
 from postproc.interp.subprogram_names import NameRule, SubprogramNames
+from postproc.syntaxes.comments import CommentSyntax
 
 from .active_comments import COMMENTS, semicolon_comment
 from .codes import CODES
@@ -103,6 +104,9 @@ class LinuxcncWriter(WordWriter):
     """[V] rs274: ``G10 L1 P5 Z1`` with no tool 5 in its table is "Requested tool 5 not found in the tool table"
     (``convert_setup_tool`` looks the tool up first): the set-up's ``<Tools>`` stand for that table."""
     """G76 threads, G87/G88 take other words: no row spells Fanuc's fine, back or manual boring."""
+    FOREIGN_COMMENTS: ClassVar[CommentSyntax | None] = COMMENTS
+    """Another dialect's comment text is written as a comment that does not act (LinuxCNC reads ``(MSG,``,
+    ``(LOGOPEN,``, ``(ABORT,`` ... as instructions: ``active_comments.WORDS``)."""
     DWELL_WORD: ClassVar[str] = "P"
     CYCLE_CANCEL_IS_MOTION: ClassVar[bool] = True
     """G80 is a motion code here: ``G80 G0`` is refused, a block's G0-G3 ends the cycle by itself."""
@@ -123,8 +127,6 @@ class LinuxcncWriter(WordWriter):
 
     def __init__(self, ctx: Context, source_dialect: str, target: type[Dialect] | None = None) -> None:
         super().__init__(ctx, source_dialect, target)
-        self.foreign = source_dialect != self.DIALECT
-        """Comments come from another dialect: none may act here (``comment``)."""
         self.inverse_time = False
         self._open: dict[str, list[str]] = {}
         """Source label -> the o-word labels written for its open constructs, innermost last."""
@@ -160,15 +162,10 @@ class LinuxcncWriter(WordWriter):
         self._counted: dict[str, tuple[Var, float]] = {}
         """Source label of an open counted loop -> its counter and step."""
 
-    def comment(self, text: str) -> str:
-        """Another dialect's comment text as a comment that does not act (LinuxCNC reads ``(MSG,``,
-        ``(LOGOPEN,``, ``(ABORT,`` ... as instructions: ``active_comments.ACTIVE``)."""
-        return COMMENTS.comment(text) if self.foreign else super().comment(text)
-
     def comments_words(self, s: Any, block: Block) -> list[str]:
         """The block's comments (``comment``), a LinuxCNC line's ``;`` comment kept one (``semicolon_comment``)."""
         texts: list[str] = s.texts
-        tail = None if self.foreign else semicolon_comment(s)
+        tail = None if self.comment_rule is not None else semicolon_comment(s)
         if tail is None:
             return [self.comment(t) for t in texts]
         return [*(self.comment(t) for t in texts[:-1]), tail]
@@ -415,7 +412,7 @@ class LinuxcncWriter(WordWriter):
                 self.renumber = number + self.renumber_step
                 return renumbered(text.strip(), number)
         comments = cast("Comments | None", block.sections.get("Comments"))
-        tail = None if comments is None or self.foreign else semicolon_comment(comments)
+        tail = None if comments is None or self.comment_rule is not None else semicolon_comment(comments)
         if comments is None or tail is None:
             return super().normalized(block)
         texts = comments.texts
