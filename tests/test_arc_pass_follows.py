@@ -120,11 +120,17 @@ def test_a_block_followed_is_one_the_general_way_gives_as_it_was(
 def test_an_expanded_hole_beside_its_number_is_followed_by_where_it_ends() -> None:
     """Not vacuous: an expanded hole (its moves straight) beside a block number goes the fast way (``moved_to_end``,
     not ``rewrite``), and one with a half turn by R among its moves has the arc rewritten by I/J/K through ``take``."""
-    step = _step()
-    step.take(_block(1, Motion("linear", {"X": 0.0, "Y": 0.0}), []))
     calls: list[Block] = []
-    general = step.rewrite
-    step.rewrite = lambda block: calls.append(block) or general(block)  # type: ignore[method-assign]
+
+    class Counting(_Arcs):
+        def rewrite(self, block: Block) -> list[Block] | None:
+            calls.append(block)
+            return super().rewrite(block)
+
+    ctx = Context("t.nc", MachineSetup(), Diagnostics(ErrorLevel.IMMEDIATE), "fanuc")
+    step = Counting(ctx, ArcOption(SETTLE), default_registry().dialect("grbl"))
+    step.take(_block(1, Motion("linear", {"X": 0.0, "Y": 0.0}), []))
+    calls.clear()
     hole = [Motion("rapid", {"X": 3.0, "Y": 4.0, "Z": 2.0}), Motion("linear", {"X": 3.0, "Y": 4.0, "Z": -5.0})]
     assert step.take(_block(2, None, ["Sequence"], hole)) is None
     assert calls == []
