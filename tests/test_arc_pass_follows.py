@@ -83,10 +83,12 @@ expansion_item = st.one_of(
     moves(), moves(), moves(),
     st.builds(Motion, st.sampled_from(["rapid", "linear"]), st.dictionaries(st.sampled_from(["X", "Y", "Z"]),
                                                                              st.just(Var(name="depth")), min_size=1)),
+    st.builds(Motion, st.just("linear"), st.dictionaries(st.sampled_from(["X", "A"]), numbers, min_size=1)),
     st.builds(Dwell, st.just(0.5)), st.builds(SpindleControl, st.sampled_from(["cw", "ccw", "stop"])),
     st.builds(ProgramControl, st.just("stop")),
 )
-"""An expansion's items: moves (arcs and R arcs near a half turn among them), a computed word, a dwell, the spindle."""
+"""An expansion's items: moves (arcs and R arcs near a half turn among them), a computed word, another axis, a dwell,
+the spindle."""
 
 
 @settings(max_examples=300, deadline=None)

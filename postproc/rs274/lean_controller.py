@@ -189,6 +189,8 @@ def _expansion_only(sections: dict[str, Section]) -> bool:
     """A block that holds an expansion (``CompoundMotion``, asked first) is an expansion alone (an expanded cycle's
     hole), maybe numbered and commented: no step rewrites it (no tool change, length offset, arc or stop code of its
     own)."""
+    if len(sections) == 1:  # (the expansion alone, most holes: no loop over the keys)
+        return True
     for key in sections:
         if key not in _EXPANSION_ONLY:
             return False
