@@ -128,38 +128,38 @@ class NotedPoint:
 
     def note_end(self, end: dict[str, float | None]) -> bool:
         """Where an expansion's moves end (``point_after.compound_end``: program units, absolute) noted, where it gives X,
-        Y and Z numbers only (True; False: another axis or a computed one, for the position at once). An expanded hole:
-        three look-ups, where bringing the position up to date and a ``dict.update`` cost ~900 instructions compiled."""
+        Y and Z numbers only (True; False: another axis, one not known, or a word that is no ``float``, for the position
+        at once). An expanded hole: three look-ups, where bringing the position up to date and a ``dict.update`` cost
+        ~900 instructions compiled. (The words are read as objects: typed ``float``, compiled code would take an
+        ``int`` for one, where the interpreter does not.)"""
         size = len(end)
         found = 0
-        bits = 0
-        x = end.get("X")
+        x: object = end.get("X")
+        y: object = end.get("Y")
+        z: object = end.get("Z")
         if x is not None:
             if type(x) is not float:
                 return False
             found = 1
-            bits = X
-        y = end.get("Y")
         if y is not None:
             if type(y) is not float:
                 return False
             found += 1
-            bits |= Y
-        z = end.get("Z")
         if z is not None:
             if type(z) is not float:
                 return False
             found += 1
-            bits |= Z
         if found < size:
             return False  # another axis, or one not known (None)
-        self.noted |= bits
         if x is not None:
-            self.x = x
+            self.x = float(x)  # (a float, tested above)
+            self.noted |= X
         if y is not None:
-            self.y = y
+            self.y = float(y)
+            self.noted |= Y
         if z is not None:
-            self.z = z
+            self.z = float(z)
+            self.noted |= Z
         return True
 
     def into(self, position: dict[str, float | None]) -> None:
