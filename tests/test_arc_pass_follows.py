@@ -3,11 +3,12 @@ its general way (``_Arcs.rewrite``, ``_Rewriter.block``):
 
 * a block whose other sections are inert to it (``INERT``: a feed, comments, the spindle, the coolant) beside a
   straight move, a kept-centre arc or an R arc the bound keeps (``_Arcs.take`` -> ``follow_move``);
-* an expanded cycle's moves without an arc, by where they end (``point_after.compound_end``).
+* an expanded cycle's moves without an arc, by where they end (``point_after.compound_end``), and a block that is such
+  an expansion beside ``INERT`` sections (an expanded hole: ``_Arcs.take`` -> ``_Rewriter.moved_to_end``).
 
 Held on random blocks to the general way (the same blocks out, the same moves, the same position after each, R arcs
-near half a turn among them: rewritten either way), and on random expansions to the position each of their moves
-gives in turn.
+near half a turn among them: rewritten either way; expansions among them, with arcs, spindle actions and computed
+words), and on random expansions to the position each of their moves gives in turn.
 """
 
 from __future__ import annotations
@@ -18,8 +19,8 @@ from hypothesis import example, given, settings, strategies as st
 
 from postproc.context import Context
 from postproc.errors import Diagnostics, ErrorLevel
-from postproc.ir import Block, Comments, CompoundMotion, Coolant, DistanceMode, Dwell, Feed, Motion, Section, Sequence
-from postproc.ir import SpindleSpeed
+from postproc.ir import Block, Comments, CompoundMotion, Coolant, DistanceMode, Dwell, Feed, Motion, ProgramControl
+from postproc.ir import Section, Sequence, SpindleControl, SpindleSpeed
 from postproc.ir.expr import Expr, Var
 from postproc.lowering.arcs import SETTLE, ArcOption, _Arcs
 from postproc.plugins import default_registry
@@ -62,31 +63,53 @@ def _section(key: str) -> Section:
             "Dwell": Dwell(0.5)}[key]
 
 
-def _block(n: int, motion: Motion | None, keys: list[str]) -> Block:
+def _copy(motion: Motion) -> Motion:
+    return Motion(motion.mode, dict(motion.axes), dict(motion.center) if motion.center else None, motion.radius)
+
+
+def _block(n: int, motion: Motion | None, keys: list[str], expansion: list[Section] | None = None) -> Block:
     block = Block(n, "", "\n")
     if motion is not None:
-        block.sections["Motion"] = Motion(motion.mode, dict(motion.axes), dict(motion.center) if motion.center else None,
-                                          motion.radius)
+        block.sections["Motion"] = _copy(motion)
+    if expansion is not None:  # (its own moves: the general way rewrites an arc among them in place)
+        block.sections["CompoundMotion"] = CompoundMotion("cycle", [_copy(one) if isinstance(one, Motion) else one
+                                                                    for one in expansion])
     for key in keys:
         block.sections[key] = _section(key)
     return block
 
 
+expansion_item = st.one_of(
+    moves(), moves(), moves(),
+    st.builds(Motion, st.sampled_from(["rapid", "linear"]), st.dictionaries(st.sampled_from(["X", "Y", "Z"]),
+                                                                             st.just(Var(name="depth")), min_size=1)),
+    st.builds(Motion, st.just("linear"), st.dictionaries(st.sampled_from(["X", "A"]), numbers, min_size=1)),
+    st.builds(Dwell, st.just(0.5)), st.builds(SpindleControl, st.sampled_from(["cw", "ccw", "stop"])),
+    st.builds(ProgramControl, st.just("stop")),
+)
+"""An expansion's items: moves (arcs and R arcs near a half turn among them), a computed word, another axis, a dwell,
+the spindle."""
+
+
 @settings(max_examples=300, deadline=None)
 @given(st.lists(st.tuples(st.one_of(st.none(), moves()), inert, st.sampled_from([[], [], [], ["DistanceMode"],
-                                                                                  ["Dwell"]])),
+                                                                                  ["Dwell"]]),
+                          st.one_of(st.none(), st.none(), st.lists(expansion_item, max_size=8))),
                 max_size=14),
        st.sampled_from(["grbl", "grblhal"]))
-@example([(Motion("linear", {"X": 0.0, "Y": 0.0}), ["Feed"], []), (Motion("cw", {"X": 50.0, "Y": 0.0}, None, 25.0),
-                                                                    ["Feed", "Sequence"], [])], "grbl")
+@example([(Motion("linear", {"X": 0.0, "Y": 0.0}), ["Feed"], [], None),
+          (Motion("cw", {"X": 50.0, "Y": 0.0}, None, 25.0), ["Feed", "Sequence"], [], None)], "grbl")
+@example([(Motion("linear", {"X": 0.0, "Y": 0.0}), [], [], None),
+          (None, ["Sequence"], [], [Motion("rapid", {"X": 3.0, "Y": 4.0, "Z": 2.0}), Motion("linear", {"Z": -5.0})]),
+          (None, [], [], [Motion("cw", {"X": 53.0, "Y": 4.0}, None, 25.0)])], "grbl")
 def test_a_block_followed_is_one_the_general_way_gives_as_it_was(
-        program: list[tuple[Motion | None, list[str], list[str]]], target: str) -> None:
+        program: list[tuple[Motion | None, list[str], list[str], list[Section] | None]], target: str) -> None:
     fast, slow = _step(target), _step(target)
     assert fast.kept_centres and fast.settles
-    for n, (motion, keys, other) in enumerate(program):
-        if motion is None and not keys and not other:
+    for n, (motion, keys, other, expansion) in enumerate(program):
+        if motion is None and not keys and not other and expansion is None:
             continue
-        mine, theirs = _block(n + 1, motion, keys + other), _block(n + 1, motion, keys + other)
+        mine, theirs = _block(n + 1, motion, keys + other, expansion), _block(n + 1, motion, keys + other, expansion)
         got, expected = fast.take(mine), slow.rewrite(theirs)
         assert (got is None) == (expected is None)
         assert mine.sections == theirs.sections
@@ -94,6 +117,32 @@ def test_a_block_followed_is_one_the_general_way_gives_as_it_was(
         slow.rewriter.settle()
         assert fast.rewriter.position == slow.rewriter.position
         assert (fast.point is None) == (slow.point is None)
+
+
+def test_an_expanded_hole_beside_its_number_is_followed_by_where_it_ends() -> None:
+    """Not vacuous: an expanded hole (its moves straight) beside a block number goes the fast way (``moved_to_end``,
+    not ``rewrite``), and one with a half turn by R among its moves has the arc rewritten by I/J/K through ``take``."""
+    calls: list[Block] = []
+
+    class Counting(_Arcs):
+        def rewrite(self, block: Block) -> list[Block] | None:
+            calls.append(block)
+            return super().rewrite(block)
+
+    ctx = Context("t.nc", MachineSetup(), Diagnostics(ErrorLevel.IMMEDIATE), "fanuc")
+    step = Counting(ctx, ArcOption(SETTLE), default_registry().dialect("grbl"))
+    step.take(_block(1, Motion("linear", {"X": 0.0, "Y": 0.0}), []))
+    calls.clear()
+    hole = [Motion("rapid", {"X": 3.0, "Y": 4.0, "Z": 2.0}), Motion("linear", {"X": 3.0, "Y": 4.0, "Z": -5.0})]
+    assert step.take(_block(2, None, ["Sequence"], hole)) is None
+    assert calls == []
+    step.rewriter.settle()
+    assert step.rewriter.position == {"X": 3.0, "Y": 4.0, "Z": -5.0}
+    block = _block(3, None, [], [Motion("cw", {"X": 53.0, "Y": 4.0}, None, 25.0)])
+    assert step.take(block) is None
+    assert calls == [block]
+    arc = block.sections["CompoundMotion"].items[0]  # type: ignore[attr-defined]
+    assert isinstance(arc, Motion) and arc.radius is None and arc.center is not None
 
 
 def test_a_half_turn_by_r_beside_a_feed_is_still_written_by_its_centre() -> None:

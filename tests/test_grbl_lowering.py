@@ -144,3 +144,18 @@ def test_a_stopped_spindles_stop_stays_where_the_source_runs_it() -> None:
     out = io.StringIO()
     translate(io.StringIO("G21 G90\nS1000 M03\nM06 M05 M08 T1\n"), out, file="t.nc", source="fanuc", target="grbl")
     assert out.getvalue().splitlines()[2:] == ["T1 M5 M0 (TOOL CHANGE: LOAD T1, THEN CYCLE START)", "M8"]
+
+
+def test_an_expanded_tap_leaves_the_spindle_running_at_the_next_tool_change() -> None:
+    """The pauses follow the spindle through an expansion (``ExpansionItems.spindle``): a G84 ends with its spindle
+    forward again (reversed at the bottom, M3 back at R: the expansion's last spindle action), so a tool change after
+    it stops the spindle first, with the warning, even where the program stopped it before the cycle; without the
+    cycle the stopped spindle needs no stop. Derived from the steps' rules (``_pause``), not from a run."""
+    program = ["G00 X0. Y0. Z10.", "M05", "G84 X1. Y1. Z-2. R1. F100.", "G80", "T3 M06"]
+    out, warnings = _lowered(program, fused=True, expanded=True)
+    pause = out[-1].sections
+    assert sorted(pause) == ["Comments", "ProgramControl", "SpindleControl", "ToolSelect"]
+    assert pause["SpindleControl"].direction == "stop"  # type: ignore[attr-defined]
+    assert warnings == ["the spindle is running at a tool change: a spindle stop is written before the pause"]
+    out, warnings = _lowered([program[0], program[1], program[-1]], fused=True, expanded=True)
+    assert "SpindleControl" not in out[-1].sections and warnings == []

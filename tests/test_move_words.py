@@ -146,3 +146,34 @@ def test_the_arc_pass_takes_a_kept_centre_arc_as_a_straight_move(moves: list[tup
         slow_step.rewriter.settle()
         assert fast_step.rewriter.position == slow_step.rewriter.position
         assert blocks[0].sections["Motion"] == blocks[1].sections["Motion"]
+
+
+ends = st.dictionaries(st.sampled_from(["X", "Y", "Z", "A"]),
+                       st.one_of(st.floats(-1e4, 1e4, allow_nan=False), st.integers(-5, 5), st.none()), max_size=4)
+
+
+@given(st.lists(st.one_of(plain_axes.map(lambda a: ("move", a)), ends.map(lambda e: ("end", e))), max_size=10),
+       st.dictionaries(st.sampled_from(["X", "Y", "Z", "A"]), st.floats(-1e4, 1e4, allow_nan=False)))
+@example([("end", {"X": 1.0, "Y": 2.0, "Z": 3.0})], {"X": 0.0, "Y": 0.0, "Z": 0.0})
+def test_an_expansions_end_noted_is_the_position_updated(steps: list[tuple[str, dict[str, float | None]]],
+                                                           start: dict[str, float | None]) -> None:
+    """``NotedPoint.note_end`` (X, Y and Z numbers only; else False, the dictionary updated at once) among plain moves
+    noted: the position after each, brought up to date, is the dictionary updated end by end and move by move."""
+    ctx = Context("t.nc", MachineSetup(), Diagnostics(ErrorLevel.IMMEDIATE), "fanuc")
+    notes = _Arcs(ctx, ArcOption("settle"), _target()).rewriter.notes
+    position: dict[str, float | None] = dict(start)
+    expected: dict[str, float | None] = dict(start)
+    for kind, given_axes in steps:
+        expected.update(given_axes)
+        if kind == "move":
+            bits = notes.words.read(Motion("linear", dict(given_axes)))  # type: ignore[arg-type]  # numbers
+            assert bits >= 0
+            notes.note(notes.words, bits)
+        elif not notes.note_end(given_axes):
+            assert set(given_axes) - {"X", "Y", "Z"} or any(type(v) is not float for v in given_axes.values())
+            notes.into(position)
+            position.update(given_axes)
+        else:
+            assert set(given_axes) <= {"X", "Y", "Z"} and all(type(v) is float for v in given_axes.values())
+        notes.into(position)
+        assert position == expected

@@ -39,6 +39,7 @@ from ..ir import (
 from ..ir.keys import watches_none
 from ..ir.state import PLANE_AXES
 from .order_of_execution import split_stops_after_motion, stops_after_motion
+from ..lowering.expansion_items import expansion_items
 from ..lowering.lower import BlockStep, LoweringStep
 from ..lowering.move_words import NotedPoint, move_words
 
@@ -134,17 +135,18 @@ class _Lean(BlockStep):
 
     def take(self, block: Block) -> list[Block] | None:
         sections = block.sections
-        quiet = watches_none(sections, _LEAN_WATCHED)
-        pauses = self.pauses
-        if quiet:
+        compound = sections.get("CompoundMotion")
+        if compound is not None:
+            if _expansion_only(sections):  # an expanded hole: only the spindle it leaves is noted
+                pauses = self.pauses
+                if pauses is not None:
+                    pauses.follow(compound)
+                return None
+        elif watches_none(sections, _LEAN_WATCHED):
             arc = sections.get("Motion")
             if not isinstance(arc, Motion) or (arc.mode != "cw" and arc.mode != "ccw") or not self.circles.closes(arc):
                 return None  # a straight move or an arc with its end point, a block number, a feed rate: no step
                 # changes it (the plane and distance mode are those ``circles`` follows: the block sets neither)
-        elif _expansion_only(sections):  # an expanded hole: only the spindle it leaves is noted
-            if pauses is not None:
-                pauses.follow(sections["CompoundMotion"])
-            return None
         return self._rewrite(block)
 
     def take_move(self, block: Block) -> list[Block] | None:
@@ -184,10 +186,11 @@ _EXPANSION_ONLY: Final = frozenset(("CompoundMotion", "Sequence", "Comments"))
 
 
 def _expansion_only(sections: dict[str, Section]) -> bool:
-    """A block that is an expansion (an expanded cycle's hole), maybe numbered and commented: no step
-    rewrites it (no tool change, length offset, arc or stop code of its own)."""
-    if "CompoundMotion" not in sections:
-        return False
+    """A block that holds an expansion (``CompoundMotion``, asked first) is an expansion alone (an expanded cycle's
+    hole), maybe numbered and commented: no step rewrites it (no tool change, length offset, arc or stop code of its
+    own)."""
+    if len(sections) == 1:  # (the expansion alone, most holes: no loop over the keys)
+        return True
     for key in sections:
         if key not in _EXPANSION_ONLY:
             return False
@@ -233,6 +236,7 @@ class _ToolChangePauses:
         self.tool: int | Expr | None = None
         self.spindle = "stop"
         self.orient_stops = ctx.setup.cycles.orientation == "stop"
+        self.items = expansion_items(ctx)
 
     def split(self, block: Block) -> list[Block]:
         """The block, preceded by the pause standing for its tool change (if it has one)."""
@@ -259,13 +263,13 @@ class _ToolChangePauses:
         return out
 
     def follow(self, compound: Section) -> None:
-        """The spindle as an expansion leaves it."""
+        """The spindle as an expansion leaves it (``ExpansionItems.spindle``: read once for the arc pass too)."""
         if isinstance(compound, CompoundMotion):
-            for item in compound.items:
-                if isinstance(item, SpindleControl):
-                    self.spindle = item.direction
-                elif isinstance(item, ProgramControl) and item.kind == "stop":
-                    self.spindle = "stop"  # the writer stops a running spindle before a pause
+            items = self.items
+            items.read(compound)
+            spindle = items.spindle
+            if spindle is not None:
+                self.spindle = spindle
 
 
 def _pause(block: Block, ctx: Context, tool: int | Expr, spindle: str) -> Block:
