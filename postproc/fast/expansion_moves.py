@@ -16,11 +16,12 @@ from typing import Final
 from mypy_extensions import mypyc_attr
 
 from ..cycles.expansion import PathMove
-from ..ir import Block, Motion
+from ..ir import Block, CompoundMotion, Motion, Section
 from ..ir.expr import Expr
-from ..output.writer_base import Writer
+from ..output.writer_base import Lane, Writer
 from ..rs274.word_numbers import _position
-from ..rs274.writer import MoveLane, WordWriter
+from ..rs274.writer import _STANDING, MoveLane, WordWriter, _is_straight, _left_out
+from .straight import StraightLane
 
 MOVE_METHODS: Final = ("move_line", "motion_words")
 """What the general path calls to write a straight move of an expansion (``compound``'s loop calls
@@ -74,6 +75,12 @@ class ExpansionMoves(MoveLane):
         of numbers (``lines`` hashes a float)."""
         self.place = 0
         """The place of the next move among them."""
+        self.made: list[Made] = []
+        """The line of each ``PathMove`` of the last expansion by its place among the expansion's items, where
+        spelling it changed nothing of the writer (``write``): the next hole's moves write the same lines, found
+        by a compare of numbers (its first move, to the next spot, is the one spelt anew)."""
+        self.made_units = writer.modal.units
+        """The units the lines of ``made`` were spelt in."""
         self.last: dict[str, float | Expr] | None = None
         """The axes of the move this lane wrote last, where they are X, Y and Z only, while the moves it writes
         follow one another (``before`` is then that very dict: its numbers are the ones below, compared without
@@ -81,6 +88,89 @@ class ExpansionMoves(MoveLane):
         self.at_x = self.at_y = self.at_z = 0.0
         self.has_x = self.has_y = self.has_z = False
         """Where ``last`` stands: its X, Y and Z numbers, and which of them it has."""
+
+    def write(self, items: list[Section], block: Block, lines: list[str]) -> None:
+        """``write_items``: the lines of an expansion's items, appended to ``lines``. A move the tool makes to a
+        spot known in X, Y and Z (``PathMove``) writes the line the move at the same place of the last expansion
+        wrote where the two write the same words (``Made``), else ``line``'s; a move ``line`` leaves, and any
+        other item, is the general path's."""
+        writer = self.writer
+        before: dict[str, float | Expr] | None = None
+        units = writer.modal.units
+        if units != self.made_units:
+            self.made.clear()
+            self.made_units = units
+        made = self.made
+        kept = len(made)
+        place = 0
+        words = -1
+        """Which of X, Y and Z (bits 1, 2, 4) the block as read has a word of, where the writer copies such a word's
+        text (``source_number``): a line with one of them is spelt anew (-1: not found yet)."""
+        at_x = at_y = at_z = 0.0
+        follows = False
+        """``before`` is the axes of the ``PathMove`` written just before (X, Y, Z at ``at_x``, ``at_y``, ``at_z``)."""
+        for item in items:
+            if isinstance(item, Motion):
+                line: str | None = None
+                if type(item) is PathMove and item.axes is item.made and self.drives_xyz \
+                        and item.center is None and item.radius is None:
+                    mode = item.mode
+                    feeding = mode == "linear"
+                    x, y, z = item.x, item.y, item.z
+                    if before is None:
+                        write_x = write_y = write_z = True
+                    elif follows:
+                        write_x, write_y, write_z = x != at_x, y != at_y, z != at_z
+                    else:
+                        was = before.get("X")
+                        write_x = not (type(was) is float and was == x)
+                        was = before.get("Y")
+                        write_y = not (type(was) is float and was == y)
+                        was = before.get("Z")
+                        write_z = not (type(was) is float and was == z)
+                    if (feeding or mode == "rapid") and (write_x or write_y or write_z) and not writer.carry \
+                            and not writer.rounding and writer.modal.distance == "absolute" \
+                            and writer.modal.units == units:
+                        if words < 0:
+                            words = _words_of(block) if block.canonical and writer.source_numbers else 0
+                        written = int(write_x) | int(write_y) << 1 | int(write_z) << 2
+                        if not written & words:
+                            if place < kept:
+                                was_made = made[place]
+                                if was_made.written == written and was_made.feeding == feeding \
+                                        and (not write_x or was_made.x == x) and (not write_y or was_made.y == y) \
+                                        and (not write_z or was_made.z == z):
+                                    line = was_made.line
+                            if line is None:
+                                line = self.line(item, before, block)
+                                if line is not None and not writer.carry:
+                                    if place < kept:
+                                        made[place] = Made(feeding, written, x, y, z, line)
+                                    elif place < LINES_KEPT:
+                                        made.append(Made(feeding, written, x, y, z, line))
+                                        kept += 1
+                            else:  # (the lane's own bookkeeping, as ``line`` keeps it)
+                                self.last = item.axes
+                                self.at_x, self.at_y, self.at_z = x, y, z
+                                self.has_x = self.has_y = self.has_z = True
+                    at_x, at_y, at_z = x, y, z
+                    follows = True
+                else:
+                    follows = False
+                if line is None:
+                    line = self.line(item, before, block)
+                    if line is None:
+                        line = writer.move_line(item if before is None else _left_out(item, before), block)
+                lines.append(line)
+                before = item.axes if _is_straight(item) else None
+                if before is None:
+                    follows = False
+            else:
+                lines.append(writer.item_line(item, block))
+                if not isinstance(item, _STANDING):
+                    before = None
+                    follows = False
+            place += 1
 
     def line(self, item: Motion, before: dict[str, float | Expr] | None, block: Block) -> str | None:
         """The move's line, or None. Its words are checked before any is spelt: spelling one may change the
@@ -285,6 +375,17 @@ class ExpansionMoves(MoveLane):
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
+class Made:
+    """The line ``ExpansionMoves.write`` wrote for a ``PathMove`` at a place of an expansion: its code (feed or
+    rapid), which of X, Y, Z it writes (bits 1, 2, 4) and their numbers (one not written is not compared)."""
+
+    __slots__ = ("feeding", "written", "x", "y", "z", "line")
+
+    def __init__(self, feeding: bool, written: int, x: float, y: float, z: float, line: str) -> None:
+        self.feeding, self.written, self.x, self.y, self.z, self.line = feeding, written, x, y, z, line
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
 class Seen:
     """A one-word line ``ExpansionMoves`` wrote at a place of a hole: its code (feed or rapid), axis (0, 1, 2:
     X, Y, Z) and number."""
@@ -300,6 +401,19 @@ def _keep(memory: dict[float, str], value: float, text: str) -> None:
     if len(memory) >= LINES_KEPT:
         memory.clear()
     memory[value] = text
+
+
+def _words_of(block: Block) -> int:
+    """Which of X, Y and Z (bits 1, 2, 4) the block as read has a word of."""
+    found = 0
+    for word, _ in block.words:
+        if word == "X":
+            found |= 1
+        elif word == "Y":
+            found |= 2
+        elif word == "Z":
+            found |= 4
+    return found
 
 
 def _has_word(block: Block, letter: str) -> bool:
@@ -326,7 +440,67 @@ def choose_moves(writer: Writer) -> MoveLane | None:
     return ExpansionMoves(writer)
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
+class ExpansionBlocks(Lane):
+    """Writes a block whose motion is an expansion (``CompoundMotion``) and that has no ``Motion``, as
+    ``write_block`` writes it (through ``words_block``, ``generate``, ``unsplit`` and ``_generate``, which give
+    such a block to ``compound``): ``compound``'s text, or the source as a comment where that is blank and the
+    controller writes such a block so (``BLANK_AS_TRACE``), then ``after_block`` where the dialect follows its
+    blocks. Offered by the straight lane (``StraightLane.expansions``) a block of no ``Motion``: a call
+    instead of six dispatches through the writer's (interpreted) class (~3,500 instructions a hole)."""
+
+    def __init__(self, writer: WordWriter) -> None:
+        super().__init__()
+        self.writer = writer
+        cls = type(writer)
+        self.apart: tuple[str, ...] = tuple(sorted(cls.STRUCTURE | cls.SPLIT))
+        """The sections that send a block elsewhere (``structure_block``, ``split_block``): a block with one is
+        the general path's."""
+
+    def write(self, block: Block) -> str | None:
+        sections = block.sections
+        compound = sections.get("CompoundMotion")
+        if not isinstance(compound, CompoundMotion) or "Motion" in sections:
+            return None
+        for key in self.apart:
+            if key in sections:
+                return None
+        writer = self.writer
+        if writer.rounding or writer.whole_speed:
+            writer.at_block = block  # (``words_block``: where a rounding warning points)
+        text = WordWriter.compound(writer, block, compound)
+        if writer.blank_as_trace and (not text or text.isspace()):  # (``unsplit``)
+            text = "" if block.text is None else writer.comment(block.text.strip()) + (block.eol or "\n")
+        if writer.after_blocks:
+            writer.after_block(block)  # (``generate``)
+        return text
+
+
+BLOCK_METHODS: Final = ("write_block", "refuse_feed_without_speed", "words_block", "generate", "unsplit", "_generate",
+                        "compound")
+"""What the general path calls to write a block whose motion is an expansion (``ExpansionBlocks``). Not among
+them: ``structure_block`` and ``split_block``, offered only a block of a ``STRUCTURE`` or ``SPLIT`` section
+(which the lane leaves) or of a ``Motion`` (likewise); ``after_block`` and ``comment``, which the lane calls as
+the general path does."""
+
+
+def choose_blocks(writer: Writer) -> ExpansionBlocks | None:
+    """The expanded-block lane for ``writer``'s run, or None: where the writer writes another dialect's blocks (it
+    copies or normalises none: ``words_block``) with the base's own ``BLOCK_METHODS``."""
+    if not isinstance(writer, WordWriter) or writer.copy_ok or writer.source_dialect == writer.DIALECT:
+        return None
+    cls = type(writer)
+    for name in BLOCK_METHODS:
+        if _owner(cls, name) not in _BASE:
+            return None
+    return ExpansionBlocks(writer)
+
+
 def install_expansion(writer: Writer) -> None:
-    """Give ``writer`` its run's expansion-move lane (``WordWriter.move_lane``), where one applies."""
+    """Give ``writer`` its run's expansion-move lane (``WordWriter.move_lane``), where one applies, and its
+    straight lane the expanded-block lane (``StraightLane.expansions``), where that applies."""
     if isinstance(writer, WordWriter):
         writer.move_lane = choose_moves(writer)
+        lane = writer.lane
+        if isinstance(lane, StraightLane):
+            lane.expansions = choose_blocks(writer)
