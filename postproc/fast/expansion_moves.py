@@ -116,6 +116,7 @@ class ExpansionMoves(MoveLane):
                         and item.center is None and item.radius is None:
                     mode = item.mode
                     feeding = mode == "linear"
+                    straight = feeding or mode == "rapid"
                     x, y, z = item.x, item.y, item.z
                     if before is None:
                         write_x = write_y = write_z = True
@@ -128,7 +129,7 @@ class ExpansionMoves(MoveLane):
                         write_y = not (type(was) is float and was == y)
                         was = before.get("Z")
                         write_z = not (type(was) is float and was == z)
-                    if (feeding or mode == "rapid") and (write_x or write_y or write_z) and not writer.carry \
+                    if straight and (write_x or write_y or write_z) and not writer.carry \
                             and not writer.rounding and writer.modal.distance == "absolute" \
                             and writer.modal.units == units:
                         if words < 0:
@@ -143,28 +144,32 @@ class ExpansionMoves(MoveLane):
                                     line = was_made.line
                             if line is None:
                                 line = self.line(item, before, block)
-                                if line is not None and not writer.carry:
+                                if line is not None and not writer.carry and place < LINES_KEPT:
+                                    record = Made(feeding, written, x, y, z, line)
                                     if place < kept:
-                                        made[place] = Made(feeding, written, x, y, z, line)
-                                    elif place < LINES_KEPT:
-                                        made.append(Made(feeding, written, x, y, z, line))
+                                        made[place] = record
+                                    else:
+                                        while kept < place:  # (the places before it keep no line)
+                                            made.append(_NO_LINE)
+                                            kept += 1
+                                        made.append(record)
                                         kept += 1
                             else:  # (the lane's own bookkeeping, as ``line`` keeps it)
                                 self.last = item.axes
                                 self.at_x, self.at_y, self.at_z = x, y, z
                                 self.has_x = self.has_y = self.has_z = True
                     at_x, at_y, at_z = x, y, z
-                    follows = True
+                    made_move = straight
                 else:
-                    follows = False
+                    straight = _is_straight(item)
+                    made_move = False
                 if line is None:
                     line = self.line(item, before, block)
                     if line is None:
                         line = writer.move_line(item if before is None else _left_out(item, before), block)
                 lines.append(line)
-                before = item.axes if _is_straight(item) else None
-                if before is None:
-                    follows = False
+                before = item.axes if straight else None
+                follows = made_move
             else:
                 lines.append(writer.item_line(item, block))
                 if not isinstance(item, _STANDING):
@@ -383,6 +388,10 @@ class Made:
 
     def __init__(self, feeding: bool, written: int, x: float, y: float, z: float, line: str) -> None:
         self.feeding, self.written, self.x, self.y, self.z, self.line = feeding, written, x, y, z, line
+
+
+_NO_LINE: Final = Made(False, 0, 0.0, 0.0, 0.0, "")
+"""The place of an expansion whose item left no line in ``made`` (it writes no axis: it matches no move)."""
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
