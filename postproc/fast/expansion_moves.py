@@ -81,6 +81,11 @@ class ExpansionMoves(MoveLane):
         by a compare of numbers (its first move, to the next spot, is the one spelt anew)."""
         self.made_units = writer.modal.units
         """The units the lines of ``made`` were spelt in."""
+        self.rest = ""
+        """The lines of ``made`` from the second place on, joined, where an expansion of ``rest_count`` items had a
+        line of ``made`` at each of them ('': none since ``made`` last changed): the next whose moves after its
+        first are all found there writes them as this one text (a hole's moves but its first are the last hole's)."""
+        self.rest_count = 0
         self.last: dict[str, float | Expr] | None = None
         """The axes of the move this lane wrote last, where they are X, Y and Z only, while the moves it writes
         follow one another (``before`` is then that very dict: its numbers are the ones below, compared without
@@ -100,9 +105,15 @@ class ExpansionMoves(MoveLane):
         if units != self.made_units:
             self.made.clear()
             self.made_units = units
+            self.rest = ""
         made = self.made
         kept = len(made)
         place = 0
+        found = 0
+        """The items from the second on that are moves whose line is ``made``'s, while every one is: not appended
+        yet (``rest`` holds them, or they are appended at the first item that is not)."""
+        remade = False
+        """A line of ``made`` changed at a place after the first (``rest`` is then made again)."""
         words = -1
         """Which of X, Y and Z (bits 1, 2, 4) the block as read has a word of, where the writer copies such a word's
         text (``source_number``): a line with one of them is spelt anew (-1: not found yet)."""
@@ -142,10 +153,21 @@ class ExpansionMoves(MoveLane):
                                         and (not write_x or was_made.x == x) and (not write_y or was_made.y == y) \
                                         and (not write_z or was_made.z == z):
                                     line = was_made.line
+                                    if place == found + 1:  # (the lane's own bookkeeping, as below)
+                                        found = place
+                                        self.last = item.axes
+                                        self.at_x, self.at_y, self.at_z = x, y, z
+                                        self.has_x = self.has_y = self.has_z = True
+                                        at_x, at_y, at_z = x, y, z
+                                        before = item.axes
+                                        follows = True
+                                        place += 1
+                                        continue
                             if line is None:
                                 line = self.line(item, before, block)
                                 if line is not None and not writer.carry and place < LINES_KEPT:
                                     record = Made(feeding, written, x, y, z, line)
+                                    remade = remade or place > 0
                                     if place < kept:
                                         made[place] = record
                                     else:
@@ -167,15 +189,30 @@ class ExpansionMoves(MoveLane):
                     line = self.line(item, before, block)
                     if line is None:
                         line = writer.move_line(item if before is None else _left_out(item, before), block)
+                if found > 0:
+                    _found(made, found, lines)
+                    found = -1
                 lines.append(line)
                 before = item.axes if straight else None
                 follows = made_move
             else:
-                lines.append(writer.item_line(item, block))
+                line = writer.item_line(item, block)
+                if found > 0:
+                    _found(made, found, lines)
+                    found = -1
+                lines.append(line)
                 if not isinstance(item, _STANDING):
                     before = None
                     follows = False
             place += 1
+        if found > 0:  # every item after the first a move found in ``made``
+            rest = self.rest
+            if not rest or self.rest_count != place:
+                rest = self.rest = "".join([made[at].line for at in range(1, place)])
+                self.rest_count = place
+            lines.append(rest)
+        elif remade:
+            self.rest = ""
 
     def line(self, item: Motion, before: dict[str, float | Expr] | None, block: Block) -> str | None:
         """The move's line, or None. Its words are checked before any is spelt: spelling one may change the
@@ -403,6 +440,12 @@ class Seen:
 
     def __init__(self, feeding: bool, slot: int, value: float, line: str) -> None:
         self.feeding, self.slot, self.value, self.line = feeding, slot, value, line
+
+
+def _found(made: list[Made], found: int, lines: list[str]) -> None:
+    """The lines of ``made`` from the second place to ``found``, to ``lines`` (``ExpansionMoves.write``)."""
+    for at in range(1, found + 1):
+        lines.append(made[at].line)
 
 
 def _keep(memory: dict[float, str], value: float, text: str) -> None:
