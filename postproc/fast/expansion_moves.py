@@ -69,6 +69,9 @@ class ExpansionMoves(MoveLane):
         self.numbers: list[dict[float, str]] = [{}, {}, {}]
         """Per axis (X, Y, Z): number -> its text, spelt likewise, for the moves that write more than one word
         (a hole's positioning, ``G0 X6.35 Y0. Z2.``: the level and the row's other axis repeat)."""
+        self.recent = [Spelt(), Spelt(), Spelt()]
+        """Per axis (X, Y, Z): the number ``numbers`` gave last and its text (a float compared, not hashed: a hole's
+        level and its row's other axis repeat)."""
         self.seen: list[Seen] = []
         """The one-word lines of the moves since the last move that had no ``before`` (a hole's first), by
         their place among them: the next hole's moves are the same lines in the same places, found by a compare
@@ -350,13 +353,18 @@ class ExpansionMoves(MoveLane):
                 text = self._one_word(code, feeding, axis, slot, value)
         else:
             words = [code]
-            if write_x:
-                words.append("X" + self._word(writer, block, "X", x, as_written))
-            if write_y:
-                words.append("Y" + self._word(writer, block, "Y", y, as_written))
-            if write_z:
-                words.append("Z" + self._word(writer, block, "Z", z, as_written))
-            text = " ".join(words) + "\n"
+            if write_x and write_y and write_z:  # (a hole's move to its spot: one string, no list joined)
+                text = (f"{code} X{self._word(writer, block, 'X', x, as_written)} "
+                        f"Y{self._word(writer, block, 'Y', y, as_written)} "
+                        f"Z{self._word(writer, block, 'Z', z, as_written)}\n")
+            else:
+                if write_x:
+                    words.append("X" + self._word(writer, block, "X", x, as_written))
+                if write_y:
+                    words.append("Y" + self._word(writer, block, "Y", y, as_written))
+                if write_z:
+                    words.append("Z" + self._word(writer, block, "Z", z, as_written))
+                text = " ".join(words) + "\n"
         self.last = item.axes
         self.at_x, self.at_y, self.at_z = x, y, z
         self.has_x = self.has_y = self.has_z = True
@@ -393,6 +401,8 @@ class ExpansionMoves(MoveLane):
             lines.clear()
         for numbers in self.numbers:
             numbers.clear()
+        for recent in self.recent:
+            recent.value = _NOT_A_NUMBER
         self.seen.clear()
 
     def _word(self, writer: WordWriter, block: Block, axis: str, value: float, as_written: bool) -> str:
@@ -400,12 +410,17 @@ class ExpansionMoves(MoveLane):
         slot = 0 if axis == "X" else 1 if axis == "Y" else 2 if axis == "Z" else -1
         if writer.rounding or writer.carry or slot < 0 or (as_written and _has_word(block, axis)):
             return self._number(writer, block, axis, value, as_written)
+        recent = self.recent[slot]
+        if recent.value == value:
+            return recent.text
         numbers = self.numbers[slot]
         text = numbers.get(value)
         if text is None:
             text = _position(writer, axis, value, False)
-            if not writer.carry:
-                _keep(numbers, value, text)
+            if writer.carry:
+                return text
+            _keep(numbers, value, text)
+        recent.value, recent.text = value, text
         return text
 
     @staticmethod
@@ -427,6 +442,19 @@ class Made:
         self.feeding, self.written, self.x, self.y, self.z, self.line = feeding, written, x, y, z, line
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
+class Spelt:
+    """A number ``ExpansionMoves._word`` spelt last for an axis, and its text (none yet: not a number)."""
+
+    __slots__ = ("value", "text")
+
+    def __init__(self) -> None:
+        self.value = _NOT_A_NUMBER
+        self.text = ""
+
+
+_NOT_A_NUMBER: Final = float("nan")
+"""Equal to no number: a ``Spelt`` that holds none."""
 _NO_LINE: Final = Made(False, 0, 0.0, 0.0, 0.0, "")
 """The place of an expansion whose item left no line in ``made`` (it writes no axis: it matches no move)."""
 
