@@ -17,7 +17,7 @@ import postproc.fast.expansion_moves as expansion_moves
 from postproc.api import translate
 from postproc.errors import Diagnostics, ErrorList
 from postproc.fast.expansion_moves import ExpansionMoves, choose_moves
-from postproc.ir import Block, Motion
+from postproc.ir import Block, Motion, Section
 from postproc.output.writer_base import Writer
 from postproc.plugins import default_registry
 from postproc.rs274.writer import WordWriter
@@ -88,6 +88,9 @@ def _no_lane(writer: Writer) -> None:
 @given(program=programs())
 @example(program=["G21 G17 G90 G0 X0. Y0. Z20.", "S1000 M03", "F150.", "G99 G81 X1. Y0.0 Z-5. R2.", "X6.35 Y0.0",
                   "G98 G83 X0. Y5.0 Z-12. R2. Q3. F120.", "X1.2345678", "G80", "M30"])
+@example(program=["G21 G17 G90 G0 X0. Y0. Z20.", "S1000 M03", "F150.", "G99 G81 X1. Y0. Z-5. R2.", "X2.", "X2.5",
+                  "X2.75", "G99 G81 X3. Y0. Z-9.25 R2.", "X4.", "X4.5", "X4.75", "G83 X5. Z-5. R2. Q2.", "X6.", "X6.5",
+                  "G81 X7. Z-5. R2.", "X8.", "X8.5", "G80", "M30"])  # (a row of other lines after a row whose moves were kept as one text: ``ExpansionMoves.rest``)
 @example(program=["G20 G17 G90 G0 X0. Y0. Z20.", "G91", "G99 G81 X1.2345678 Y0.1 Z-1.2345678 R2. K3 F10.",
                   "G90", "G18 G98 G82 X1. Y2. Z-5. R0.5 P300", "G19 G87 X1. Y2. Z-5. R3.0 Q0.5", "G80", "M30"])
 def test_the_lane_writes_what_the_general_path_writes(program: list[str], source: str, target: str,
@@ -122,26 +125,36 @@ def test_the_lane_is_chosen_where_the_base_writes_moves() -> None:
 
 def test_the_lane_writes_the_moves_of_a_row_of_holes() -> None:
     """On the cycles benchmark's rows, the lane (not the general path) writes each move: the comparison above
-    is between two paths."""
+    is between two paths. A hole's moves after its first are the lines of the same moves of the hole before
+    (``ExpansionMoves.made``), not spelt again: the lane spells only the first hole and each hole's move to its
+    spot."""
+    spelt: list[str] = []
     written: list[str] = []
 
     class Spy(ExpansionMoves):
         def line(self, item: Motion, before: object, block: Block) -> str | None:  # type: ignore[override]
             text = super().line(item, before, block)  # type: ignore[arg-type]
-            if text is not None:
-                written.append(text)
+            assert text is not None  # (None: the general path writes the move)
+            spelt.append(text)
             return text
+
+        def write(self, items: list[Section], block: Block, lines: list[str]) -> None:
+            at = len(lines)
+            super().write(items, block, lines)
+            written.extend(lines[at:])
 
     def spy(writer: Writer) -> None:
         assert isinstance(writer, WordWriter)
         writer.move_lane = Spy(writer)
 
-    program = ["G21 G17 G90 G0 X0. Y0. Z10.", "S1800 M03", "G99 G81 X0. Y0.0 Z-5. R2. F150.", "X6.35 Y0.0", "G80",
-               "M30"]
+    program = ["G21 G17 G90 G0 X0. Y0. Z10.", "S1800 M03", "G99 G81 X0. Y0.0 Z-5. R2. F150.", "X6.35 Y0.0",
+               "X12.7 Y0.0", "G80", "M30"]
     with pytest.MonkeyPatch.context() as patch:
         patch.setattr(expansion_moves, "install_expansion", spy)
         text = _run(program, "fanuc", "linuxcnc")
-    assert written == ["G0 X0. Y0. Z2.\n", "G1 Z-5.\n", "G0 Z2.\n", "G0 X6.35 Y0. Z2.\n", "G1 Z-5.\n", "G0 Z2.\n"]
+    assert written == ["G0 X0. Y0. Z2.\n", "G1 Z-5.\n", "G0 Z2.\n", "G0 X6.35 Y0. Z2.\n", "G1 Z-5.\nG0 Z2.\n",
+                       "G0 X12.7 Y0. Z2.\n", "G1 Z-5.\nG0 Z2.\n"]  # (a hole's moves after its first: one text, ``rest``)
+    assert spelt == ["G0 X0. Y0. Z2.\n", "G1 Z-5.\n", "G0 Z2.\n", "G0 X6.35 Y0. Z2.\n", "G0 X12.7 Y0. Z2.\n"]
     assert "".join(written) in "".join(line for line in text.splitlines(keepends=True) if not line.startswith("("))
 
 

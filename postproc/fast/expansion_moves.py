@@ -16,11 +16,12 @@ from typing import Final
 from mypy_extensions import mypyc_attr
 
 from ..cycles.expansion import PathMove
-from ..ir import Block, Motion
+from ..ir import Block, CompoundMotion, Motion, Section
 from ..ir.expr import Expr
-from ..output.writer_base import Writer
+from ..output.writer_base import Lane, Writer
 from ..rs274.word_numbers import _position
-from ..rs274.writer import MoveLane, WordWriter
+from ..rs274.writer import _STANDING, MoveLane, WordWriter, _is_straight, _left_out
+from .straight import StraightLane
 
 MOVE_METHODS: Final = ("move_line", "motion_words")
 """What the general path calls to write a straight move of an expansion (``compound``'s loop calls
@@ -66,15 +67,28 @@ class ExpansionMoves(MoveLane):
         then reads the writer's table of exact texts): an expansion writes the same few lines (``G1 Z-5.``,
         ``G0 Z2.``) at every hole. A float key, not a tuple: no tuple to build and hash a move."""
         self.numbers: list[dict[float, str]] = [{}, {}, {}]
-        """Per axis (X, Y, Z): number -> its word with the space before it (`` Z2.``), spelt likewise, for the
-        moves that write more than one word (a hole's positioning, ``G0 X6.35 Y0. Z2.``: the level and the row's
-        other axis repeat)."""
+        """Per axis (X, Y, Z): number -> its text, spelt likewise, for the moves that write more than one word
+        (a hole's positioning, ``G0 X6.35 Y0. Z2.``: the level and the row's other axis repeat)."""
+        self.recent = [Spelt(), Spelt(), Spelt()]
+        """Per axis (X, Y, Z): the number ``numbers`` gave last and its text (a float compared, not hashed: a hole's
+        level and its row's other axis repeat)."""
         self.seen: list[Seen] = []
         """The one-word lines of the moves since the last move that had no ``before`` (a hole's first), by
         their place among them: the next hole's moves are the same lines in the same places, found by a compare
         of numbers (``lines`` hashes a float)."""
         self.place = 0
         """The place of the next move among them."""
+        self.made: list[Made] = []
+        """The line of each ``PathMove`` of the last expansion by its place among the expansion's items, where
+        spelling it changed nothing of the writer (``write``): the next hole's moves write the same lines, found
+        by a compare of numbers (its first move, to the next spot, is the one spelt anew)."""
+        self.made_units = writer.modal.units
+        """The units the lines of ``made`` were spelt in."""
+        self.rest = ""
+        """The lines of ``made`` from the second place on, joined, where an expansion of ``rest_count`` items had a
+        line of ``made`` at each of them ('': none since ``made`` last changed): the next whose moves after its
+        first are all found there writes them as this one text (a hole's moves but its first are the last hole's)."""
+        self.rest_count = 0
         self.last: dict[str, float | Expr] | None = None
         """The axes of the move this lane wrote last, where they are X, Y and Z only, while the moves it writes
         follow one another (``before`` is then that very dict: its numbers are the ones below, compared without
@@ -82,6 +96,126 @@ class ExpansionMoves(MoveLane):
         self.at_x = self.at_y = self.at_z = 0.0
         self.has_x = self.has_y = self.has_z = False
         """Where ``last`` stands: its X, Y and Z numbers, and which of them it has."""
+
+    def write(self, items: list[Section], block: Block, lines: list[str]) -> None:
+        """``write_items``: the lines of an expansion's items, appended to ``lines``. A move the tool makes to a
+        spot known in X, Y and Z (``PathMove``) writes the line the move at the same place of the last expansion
+        wrote where the two write the same words (``Made``), else ``line``'s; a move ``line`` leaves, and any
+        other item, is the general path's."""
+        writer = self.writer
+        before: dict[str, float | Expr] | None = None
+        units = writer.modal.units
+        if units != self.made_units:
+            self.made.clear()
+            self.made_units = units
+            self.rest = ""
+        made = self.made
+        kept = len(made)
+        place = 0
+        found = 0
+        """The items from the second on that are moves whose line is ``made``'s, while every one is: not appended
+        yet (``rest`` holds them, or they are appended at the first item that is not)."""
+        remade = False
+        """A line of ``made`` changed at a place after the first (``rest`` is then made again)."""
+        words = -1
+        """Which of X, Y and Z (bits 1, 2, 4) the block as read has a word of, where the writer copies such a word's
+        text (``source_number``): a line with one of them is spelt anew (-1: not found yet)."""
+        at_x = at_y = at_z = 0.0
+        follows = False
+        """``before`` is the axes of the ``PathMove`` written just before (X, Y, Z at ``at_x``, ``at_y``, ``at_z``)."""
+        for item in items:
+            if isinstance(item, Motion):
+                line: str | None = None
+                if type(item) is PathMove and item.axes is item.made and self.drives_xyz \
+                        and item.center is None and item.radius is None:
+                    mode = item.mode
+                    feeding = mode == "linear"
+                    straight = feeding or mode == "rapid"
+                    x, y, z = item.x, item.y, item.z
+                    if before is None:
+                        write_x = write_y = write_z = True
+                    elif follows:
+                        write_x, write_y, write_z = x != at_x, y != at_y, z != at_z
+                    else:
+                        was = before.get("X")
+                        write_x = not (type(was) is float and was == x)
+                        was = before.get("Y")
+                        write_y = not (type(was) is float and was == y)
+                        was = before.get("Z")
+                        write_z = not (type(was) is float and was == z)
+                    if straight and (write_x or write_y or write_z) and not writer.carry \
+                            and not writer.rounding and writer.modal.distance == "absolute" \
+                            and writer.modal.units == units:
+                        if words < 0:
+                            words = _words_of(block) if block.canonical and writer.source_numbers else 0
+                        written = int(write_x) | int(write_y) << 1 | int(write_z) << 2
+                        if not written & words:
+                            if place < kept:
+                                was_made = made[place]
+                                if was_made.written == written and was_made.feeding == feeding \
+                                        and (not write_x or was_made.x == x) and (not write_y or was_made.y == y) \
+                                        and (not write_z or was_made.z == z):
+                                    line = was_made.line
+                                    if place == found + 1:  # (the lane's own bookkeeping, as below)
+                                        found = place
+                                        self.last = item.axes
+                                        self.at_x, self.at_y, self.at_z = x, y, z
+                                        self.has_x = self.has_y = self.has_z = True
+                                        at_x, at_y, at_z = x, y, z
+                                        before = item.axes
+                                        follows = True
+                                        place += 1
+                                        continue
+                            if line is None:
+                                line = self.line(item, before, block)
+                                if line is not None and not writer.carry and place < LINES_KEPT:
+                                    record = Made(feeding, written, x, y, z, line)
+                                    remade = remade or place > 0
+                                    if place < kept:
+                                        made[place] = record
+                                    else:
+                                        while kept < place:  # (the places before it keep no line)
+                                            made.append(_NO_LINE)
+                                            kept += 1
+                                        made.append(record)
+                                        kept += 1
+                            else:  # (the lane's own bookkeeping, as ``line`` keeps it)
+                                self.last = item.axes
+                                self.at_x, self.at_y, self.at_z = x, y, z
+                                self.has_x = self.has_y = self.has_z = True
+                    at_x, at_y, at_z = x, y, z
+                    made_move = straight
+                else:
+                    straight = _is_straight(item)
+                    made_move = False
+                if line is None:
+                    line = self.line(item, before, block)
+                    if line is None:
+                        line = writer.move_line(item if before is None else _left_out(item, before), block)
+                if found > 0:
+                    _found(made, found, lines)
+                    found = -1
+                lines.append(line)
+                before = item.axes if straight else None
+                follows = made_move
+            else:
+                line = writer.item_line(item, block)
+                if found > 0:
+                    _found(made, found, lines)
+                    found = -1
+                lines.append(line)
+                if not isinstance(item, _STANDING):
+                    before = None
+                    follows = False
+            place += 1
+        if found > 0:  # every item after the first a move found in ``made``
+            rest = self.rest
+            if not rest or self.rest_count != place:
+                rest = self.rest = "".join([made[at].line for at in range(1, place)])
+                self.rest_count = place
+            lines.append(rest)
+        elif remade:
+            self.rest = ""
 
     def line(self, item: Motion, before: dict[str, float | Expr] | None, block: Block) -> str | None:
         """The move's line, or None. Its words are checked before any is spelt: spelling one may change the
@@ -161,7 +295,7 @@ class ExpansionMoves(MoveLane):
             else:
                 text = self._one_word(code, feeding, last, last_slot, last_value)
         else:
-            text = code
+            words = [code]
             for axis, value in axes.items():
                 if not isinstance(value, float):
                     return None  # (none: tested above, before a word was spelt)
@@ -175,8 +309,8 @@ class ExpansionMoves(MoveLane):
                     was = None if before is None else before.get(axis)
                     write = not (type(was) is float and was == value)
                 if write:
-                    text += self._word(writer, block, axis, value, as_written)
-            text += "\n"
+                    words.append(axis + self._word(writer, block, axis, value, as_written))
+            text = " ".join(words) + "\n"
         if other:
             self.last = None
         else:
@@ -211,28 +345,30 @@ class ExpansionMoves(MoveLane):
         if units != self.units:
             self._forget(units)
         as_written = block.canonical and writer.source_numbers
-        if written == 1:  # (no tuple of the one word's axis, slot and number: a branch each)
-            if write_z:
-                text = self._single(writer, block, code, feeding, "Z", 2, z, as_written)
-            elif write_x:
-                text = self._single(writer, block, code, feeding, "X", 0, x, as_written)
+        if written == 1:
+            axis, slot, value = ("X", 0, x) if write_x else ("Y", 1, y) if write_y else ("Z", 2, z)
+            if writer.rounding or writer.carry or (as_written and _has_word(block, axis)):
+                text = f"{code} {axis}{self._number(writer, block, axis, value, as_written)}\n"
             else:
-                text = self._single(writer, block, code, feeding, "Y", 1, y, as_written)
-        else:  # (one string built of its parts, spelt in X, Y, Z order: no list to join)
-            text = (f"{code}{self._word(writer, block, 'X', x, as_written) if write_x else ''}"
-                    f"{self._word(writer, block, 'Y', y, as_written) if write_y else ''}"
-                    f"{self._word(writer, block, 'Z', z, as_written) if write_z else ''}\n")
+                text = self._one_word(code, feeding, axis, slot, value)
+        else:
+            words = [code]
+            if write_x and write_y and write_z:  # (a hole's move to its spot: one string, no list joined)
+                text = (f"{code} X{self._word(writer, block, 'X', x, as_written)} "
+                        f"Y{self._word(writer, block, 'Y', y, as_written)} "
+                        f"Z{self._word(writer, block, 'Z', z, as_written)}\n")
+            else:
+                if write_x:
+                    words.append("X" + self._word(writer, block, "X", x, as_written))
+                if write_y:
+                    words.append("Y" + self._word(writer, block, "Y", y, as_written))
+                if write_z:
+                    words.append("Z" + self._word(writer, block, "Z", z, as_written))
+                text = " ".join(words) + "\n"
         self.last = item.axes
         self.at_x, self.at_y, self.at_z = x, y, z
         self.has_x = self.has_y = self.has_z = True
         return text
-
-    def _single(self, writer: WordWriter, block: Block, code: str, feeding: bool, axis: str, slot: int,
-                value: float, as_written: bool) -> str:
-        """The line of a move that writes one word, an X, Y or Z (``slot`` 0, 1, 2) at ``value``."""
-        if writer.rounding or writer.carry or (as_written and _has_word(block, axis)):
-            return f"{code} {axis}{self._number(writer, block, axis, value, as_written)}\n"
-        return self._one_word(code, feeding, axis, slot, value)
 
     def _one_word(self, code: str, feeding: bool, axis: str, slot: int, value: float) -> str:
         """The line of a move that writes one word, an X, Y or Z at ``value``, where spelling it changes nothing
@@ -265,20 +401,26 @@ class ExpansionMoves(MoveLane):
             lines.clear()
         for numbers in self.numbers:
             numbers.clear()
+        for recent in self.recent:
+            recent.value = _NOT_A_NUMBER
         self.seen.clear()
 
     def _word(self, writer: WordWriter, block: Block, axis: str, value: float, as_written: bool) -> str:
-        """A word of a line, with the space before it (`` X6.35``): its number ``_number``'s, the word from
-        ``numbers`` where spelling it changes nothing of the writer (as ``lines``)."""
+        """``_number``, from ``numbers`` where spelling it changes nothing of the writer (as ``lines``)."""
         slot = 0 if axis == "X" else 1 if axis == "Y" else 2 if axis == "Z" else -1
         if writer.rounding or writer.carry or slot < 0 or (as_written and _has_word(block, axis)):
-            return f" {axis}{self._number(writer, block, axis, value, as_written)}"
+            return self._number(writer, block, axis, value, as_written)
+        recent = self.recent[slot]
+        if recent.value == value:
+            return recent.text
         numbers = self.numbers[slot]
         text = numbers.get(value)
         if text is None:
-            text = f" {axis}{_position(writer, axis, value, False)}"
-            if not writer.carry:
-                _keep(numbers, value, text)
+            text = _position(writer, axis, value, False)
+            if writer.carry:
+                return text
+            _keep(numbers, value, text)
+        recent.value, recent.text = value, text
         return text
 
     @staticmethod
@@ -287,6 +429,34 @@ class ExpansionMoves(MoveLane):
         writer's, else ``_position``."""
         number = writer.source_number(block, axis, value, False) if as_written else None
         return number if number is not None else _position(writer, axis, value, False)
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class Made:
+    """The line ``ExpansionMoves.write`` wrote for a ``PathMove`` at a place of an expansion: its code (feed or
+    rapid), which of X, Y, Z it writes (bits 1, 2, 4) and their numbers (one not written is not compared)."""
+
+    __slots__ = ("feeding", "written", "x", "y", "z", "line")
+
+    def __init__(self, feeding: bool, written: int, x: float, y: float, z: float, line: str) -> None:
+        self.feeding, self.written, self.x, self.y, self.z, self.line = feeding, written, x, y, z, line
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class Spelt:
+    """A number ``ExpansionMoves._word`` spelt last for an axis, and its text (none yet: not a number)."""
+
+    __slots__ = ("value", "text")
+
+    def __init__(self) -> None:
+        self.value = _NOT_A_NUMBER
+        self.text = ""
+
+
+_NOT_A_NUMBER: Final = float("nan")
+"""Equal to no number: a ``Spelt`` that holds none."""
+_NO_LINE: Final = Made(False, 0, 0.0, 0.0, 0.0, "")
+"""The place of an expansion whose item left no line in ``made`` (it writes no axis: it matches no move)."""
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -300,11 +470,30 @@ class Seen:
         self.feeding, self.slot, self.value, self.line = feeding, slot, value, line
 
 
+def _found(made: list[Made], found: int, lines: list[str]) -> None:
+    """The lines of ``made`` from the second place to ``found``, to ``lines`` (``ExpansionMoves.write``)."""
+    for at in range(1, found + 1):
+        lines.append(made[at].line)
+
+
 def _keep(memory: dict[float, str], value: float, text: str) -> None:
     """Remember ``text`` for ``value``, at most ``LINES_KEPT`` numbers (then start again)."""
     if len(memory) >= LINES_KEPT:
         memory.clear()
     memory[value] = text
+
+
+def _words_of(block: Block) -> int:
+    """Which of X, Y and Z (bits 1, 2, 4) the block as read has a word of."""
+    found = 0
+    for word, _ in block.words:
+        if word == "X":
+            found |= 1
+        elif word == "Y":
+            found |= 2
+        elif word == "Z":
+            found |= 4
+    return found
 
 
 def _has_word(block: Block, letter: str) -> bool:
@@ -331,7 +520,67 @@ def choose_moves(writer: Writer) -> MoveLane | None:
     return ExpansionMoves(writer)
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
+class ExpansionBlocks(Lane):
+    """Writes a block whose motion is an expansion (``CompoundMotion``) and that has no ``Motion``, as
+    ``write_block`` writes it (through ``words_block``, ``generate``, ``unsplit`` and ``_generate``, which give
+    such a block to ``compound``): ``compound``'s text, or the source as a comment where that is blank and the
+    controller writes such a block so (``BLANK_AS_TRACE``), then ``after_block`` where the dialect follows its
+    blocks. Offered by the straight lane (``StraightLane.expansions``) a block of no ``Motion``: a call
+    instead of six dispatches through the writer's (interpreted) class (~3,500 instructions a hole)."""
+
+    def __init__(self, writer: WordWriter) -> None:
+        super().__init__()
+        self.writer = writer
+        cls = type(writer)
+        self.apart: tuple[str, ...] = tuple(sorted(cls.STRUCTURE | cls.SPLIT))
+        """The sections that send a block elsewhere (``structure_block``, ``split_block``): a block with one is
+        the general path's."""
+
+    def write(self, block: Block) -> str | None:
+        sections = block.sections
+        compound = sections.get("CompoundMotion")
+        if not isinstance(compound, CompoundMotion) or "Motion" in sections:
+            return None
+        for key in self.apart:
+            if key in sections:
+                return None
+        writer = self.writer
+        if writer.rounding or writer.whole_speed:
+            writer.at_block = block  # (``words_block``: where a rounding warning points)
+        text = WordWriter.compound(writer, block, compound)
+        if writer.blank_as_trace and (not text or text.isspace()):  # (``unsplit``)
+            text = "" if block.text is None else writer.comment(block.text.strip()) + (block.eol or "\n")
+        if writer.after_blocks:
+            writer.after_block(block)  # (``generate``)
+        return text
+
+
+BLOCK_METHODS: Final = ("write_block", "refuse_feed_without_speed", "words_block", "generate", "unsplit", "_generate",
+                        "compound")
+"""What the general path calls to write a block whose motion is an expansion (``ExpansionBlocks``). Not among
+them: ``structure_block`` and ``split_block``, offered only a block of a ``STRUCTURE`` or ``SPLIT`` section
+(which the lane leaves) or of a ``Motion`` (likewise); ``after_block`` and ``comment``, which the lane calls as
+the general path does."""
+
+
+def choose_blocks(writer: Writer) -> ExpansionBlocks | None:
+    """The expanded-block lane for ``writer``'s run, or None: where the writer writes another dialect's blocks (it
+    copies or normalises none: ``words_block``) with the base's own ``BLOCK_METHODS``."""
+    if not isinstance(writer, WordWriter) or writer.copy_ok or writer.source_dialect == writer.DIALECT:
+        return None
+    cls = type(writer)
+    for name in BLOCK_METHODS:
+        if _owner(cls, name) not in _BASE:
+            return None
+    return ExpansionBlocks(writer)
+
+
 def install_expansion(writer: Writer) -> None:
-    """Give ``writer`` its run's expansion-move lane (``WordWriter.move_lane``), where one applies."""
+    """Give ``writer`` its run's expansion-move lane (``WordWriter.move_lane``), where one applies, and its
+    straight lane the expanded-block lane (``StraightLane.expansions``), where that applies."""
     if isinstance(writer, WordWriter):
         writer.move_lane = choose_moves(writer)
+        lane = writer.lane
+        if isinstance(lane, StraightLane):
+            lane.expansions = choose_blocks(writer)

@@ -195,6 +195,9 @@ class StraightLane(Lane):
         """As ``CopyLane.per_rev_checked``."""
         self.max_number = writer.MAX_BLOCK_NUMBER
         """A block number above it (when not 0) is the general path's to drop (``sequence_words``)."""
+        self.expansions: Lane | None = None
+        """The lane of a block whose motion is an expansion (``postproc.fast.expansion_moves.ExpansionBlocks``,
+        installed with the expansion-move lane where it applies): a block of no ``Motion`` is offered to it."""
 
     def write(self, block: Block) -> str | None:
         """The block's text, or None."""
@@ -202,6 +205,13 @@ class StraightLane(Lane):
         sections = block.sections
         text = block.text
         motion = sections.get("Motion")
+        if motion is None:
+            expansions = self.expansions
+            if expansions is None:
+                return None
+            self.plain = False  # (its lines go to the line rule: ``Lane.plain``)
+            return expansions.write(block)
+        self.plain = True
         if not isinstance(motion, Motion) or text is None or not block.canonical or writer.carry \
                 or not writer.source_numbers:
             return None

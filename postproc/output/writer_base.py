@@ -75,6 +75,9 @@ class Lane:
         run's rule tells so from the length alone, ``postproc.fast.lane``; 0: every text goes to the rule)."""
         self.puts = False
         """The lane also offers ``put`` (read once a run by ``Writer.write``)."""
+        self.plain = True
+        """The text ``write`` answered last is of the kind ``passes_below`` speaks of (False: an expanded cycle's
+        lines, ``postproc.fast.expansion_moves.ExpansionBlocks``, which go to the line rule whatever their length)."""
 
     def write(self, block: Block) -> str | None:
         raise NotImplementedError
@@ -196,7 +199,7 @@ class Writer(abc.ABC):
                 text = lane.write(block) if lane is not None else None
                 if text is None:
                     text = write_block(block)
-                else:
+                elif lane is not None and lane.plain:
                     short = passes_below
             except UnsupportedError as err:
                 text = self.unsupported_block(block, err)

@@ -59,12 +59,12 @@ SectionWriter = Callable[[Any, Any, Block], list[str]]
 
 @mypyc_attr(allow_interpreted_subclasses=True)
 class MoveLane:
-    """A speed-only shortcut a run installs on its word writer (``postproc.fast.expansion_moves``): ``line``
-    writes a move of an expansion as ``compound`` writes it (``move_line`` of the move less the axes
-    ``_left_out`` leaves out), or answers None (the general path writes it). An object, not a function: the
-    expansion's loop calls it natively."""
+    """A speed-only shortcut a run installs on its word writer (``postproc.fast.expansion_moves``): ``write``
+    writes an expansion's items as ``compound`` writes them (``write_items``: ``move_line`` of each move less
+    the axes ``_left_out`` leaves out, ``item_line`` of any other item). An object, not a function: ``compound``
+    calls it natively."""
 
-    def line(self, item: Motion, before: dict[str, float | Expr] | None, block: Block) -> str | None:
+    def write(self, items: list[Section], block: Block, lines: list[str]) -> None:
         raise NotImplementedError
 
 
@@ -479,20 +479,11 @@ class WordWriter(MotionWords):
             lines.append(self.generate(first))
         lines.append(note)
         was_incremental = self.modal.distance == "incremental"
-        before: dict[str, float | Expr] | None = None
-        """The axes of the straight move written last, while the tool stands there: the next straight move
-        leaves out the axes it does not change (``_left_out``)."""
         moves = self.move_lane
-        for item in compound.items:
-            if isinstance(item, Motion):
-                line = None if moves is None else moves.line(item, before, block)
-                lines.append(line if line is not None else
-                             self.move_line(item if before is None else _left_out(item, before), block))
-                before = item.axes if _is_straight(item) else None
-            else:
-                lines.append(self.item_line(item, block))
-                if not isinstance(item, _STANDING):
-                    before = None
+        if moves is None:
+            write_items(self, compound.items, block, lines)
+        else:
+            moves.write(compound.items, block, lines)
         if was_incremental:
             lines.append(self.code("distance", "incremental", "incremental distance mode", block) + "\n")
             self.modal.distance = "incremental"
@@ -529,6 +520,22 @@ class WordWriter(MotionWords):
 
     def source_text(self, block: Block) -> str:
         return _source_text(block)
+
+
+def write_items(writer: WordWriter, items: list[Section], block: Block, lines: list[str]) -> None:
+    """The lines of an expansion's items, as ``compound`` writes them (appended to ``lines``): each move as
+    ``move_line`` writes it less the axes ``_left_out`` leaves out, any other item as ``item_line`` does."""
+    before: dict[str, float | Expr] | None = None
+    """The axes of the straight move written last, while the tool stands there: the next straight move
+    leaves out the axes it does not change (``_left_out``)."""
+    for item in items:
+        if isinstance(item, Motion):
+            lines.append(writer.move_line(item if before is None else _left_out(item, before), block))
+            before = item.axes if _is_straight(item) else None
+        else:
+            lines.append(writer.item_line(item, block))
+            if not isinstance(item, _STANDING):
+                before = None
 
 
 _STANDING: Final = (Feed, Dwell)
@@ -573,7 +580,13 @@ def _source_text(block: Block) -> str:
     """``source_text`` of the base: the block as read, on one line."""
     if block.text is not None:
         return one_line(block.text).strip()
-    return " ".join(letter + num for letter, num in block.words)
+    parts: list[str] = []  # (one join of the pieces: a word's letter and number joined first cost ~1,000 more a hole)
+    for letter, num in block.words:
+        if parts:
+            parts.append(" ")
+        parts.append(letter)
+        parts.append(num)
+    return "".join(parts)
 
 
 def _moves_in(sections: dict[str, Section], modes: frozenset[str]) -> bool:
