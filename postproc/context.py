@@ -155,6 +155,10 @@ class Context:
         """Where ``block`` (column ``col``) is, through the source map: the one way to locate a block."""
         return locate(self.file, block, col)
 
+    def word_at(self, block: Block, letter: str | None) -> Location:
+        """Where ``block``'s first word with ``letter`` is (None: the block's start)."""
+        return self.at(block) if letter is None else self.at(block, self.column_of(block, letter))
+
     def column_of(self, block: Block, letter: str, number: str | None = None, nth: int = 1) -> int:
         """Column of the ``nth`` word with ``letter`` (and, if given, exactly that number text) in the
         block's text, comments skipped. Computed only when reporting an error."""

@@ -39,6 +39,12 @@ from ..ir import Block, Section
 from ..ir.expr import Expr, Num
 from .block_references import PROFILE_RANGE, names_block_numbers
 
+def takes_number(block: Block) -> bool:
+    """A renumbering run numbers this block (the writer's ``normalized`` does: a line of the dialect with words
+    that opens no program)."""
+    return block.text is not None and bool(block.words) and "ProgramStart" not in block.sections
+
+
 class Renumbering:
     """The first pass of one renumbering run: the number each block will carry, and the references'."""
 

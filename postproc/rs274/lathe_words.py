@@ -58,6 +58,7 @@ SECOND_WORDS: dict[str, dict[str, tuple[str, str]]] = {
 }
 """The cycle block (second of two, or the only one): letter -> (parameter, how it is read)."""
 SECOND_WORDS["face_rough"] = SECOND_WORDS["turn_rough"]
+
 SECOND_WORDS["groove"] = SECOND_WORDS["face_peck"]
 SECOND_WORDS["thread_single"] = SECOND_WORDS["turn_single"]
 SECOND_WORDS["face_single"] = SECOND_WORDS["turn_single"]
@@ -300,3 +301,11 @@ def _float(num: str, up: str, where: Any) -> float:
         return float(num)
     except ValueError:
         raise ParseError(f"address {up} needs a number ({up}{num})", where) from None
+
+
+def profile_letters(cycle: Any) -> dict[str, str]:
+    """A lathe cycle's letter of each parameter that names a block of its profile (``P`` ``ns``, ``Q`` ``nf``):
+    what a renumbering rewrites."""
+    table = ONE_WORDS if getattr(cycle, "form", "") == "one" else SECOND_WORDS
+    words = table.get(getattr(cycle, "kind", ""), {})
+    return {param: letter for letter, (param, _) in words.items() if param in ("ns", "nf")}

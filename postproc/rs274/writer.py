@@ -22,7 +22,7 @@ from ..block_rules import per_rev_problem
 from ..context import Context
 from ..interp.control import ASSIGN, CONTROL
 from ..dialect import Dialect
-from ..errors import Location, ProgramError, UnsupportedError
+from ..errors import ProgramError, UnsupportedError
 from ..ir.event_order import after_motion
 from ..ir.expr import Expr
 from ..ir import Block, CompoundMotion, Dwell, Feed, Motion, Section, one_line
@@ -130,40 +130,24 @@ class WordWriter(MotionWords):
         if not self.renumber or self.source_dialect != self.DIALECT:  # (between two: ``LineFormat`` numbers)
             super().write(blocks, out)
             return
-        from ..output.block_renumbering import Renumbering
+        from ..output.block_renumbering import Renumbering, takes_number
         listed = list(blocks)
-        self.renumbering = Renumbering(listed, self.renumber, self.renumber_step, self.takes_number)
+        self.renumbering = Renumbering(listed, self.renumber, self.renumber_step, takes_number)
         super().write(listed, out)
         for error in self.renumbering.check(self.ctx.at):
             self.ctx.diagnostics.error(error)
 
-    def takes_number(self, block: Block) -> bool:
-        """A renumbering run numbers this block (``normalized`` does: a line of the dialect with words that
-        opens no program)."""
-        return block.text is not None and bool(block.words) and "ProgramStart" not in block.sections
-
     def renumbering_pass(self) -> "Renumbering":
         renumbering = self.renumbering
         if renumbering is None:  # (``normalized`` called without ``write``: a numbering of no references)
-            from ..output.block_renumbering import Renumbering
-            renumbering = self.renumbering = Renumbering([], self.renumber, self.renumber_step, self.takes_number)
+            from ..output.block_renumbering import Renumbering, takes_number
+            renumbering = self.renumbering = Renumbering([], self.renumber, self.renumber_step, takes_number)
         return renumbering
 
     def native_block_reference(self, block: Block) -> str | None:
         """What in a block kept in the dialect's own words (``NativeCode``) names a block number, which a
         renumbering cannot rewrite (None: nothing; the base knows of none)."""
         return None
-
-    def profile_letters(self, cycle: Section) -> dict[str, str]:
-        """A lathe cycle's letter of each parameter that names a block of its profile (``P`` ``ns``, ``Q`` ``nf``)."""
-        from .lathe_words import ONE_WORDS, SECOND_WORDS
-        table = ONE_WORDS if getattr(cycle, "form", "") == "one" else SECOND_WORDS
-        words = table.get(getattr(cycle, "kind", ""), {})
-        return {param: letter for letter, (param, _) in words.items() if param in ("ns", "nf")}
-
-    def _word_at(self, block: Block, letter: str | None) -> Location:
-        ctx = self.ctx
-        return ctx.at(block) if letter is None else ctx.at(block, ctx.column_of(block, letter))
 
     def write_block(self, block: Block) -> str | None:
         """The text of a block: a block with a ``STRUCTURE`` section as ``structure_block`` writes it, any
@@ -249,7 +233,8 @@ class WordWriter(MotionWords):
                 raise ProgramError(f"--renumber cannot rewrite the block number {native} names (the line is kept as "
                                    f"written): its target would change", self.ctx.at(block))
             if names_block_numbers(block):  # every reference written with its target's new number (or refused)
-                block = self.renumbering_pass().rewritten(block, self._word_at, self.profile_letters)
+                from .lathe_words import profile_letters
+                block = self.renumbering_pass().rewritten(block, self.ctx.word_at, profile_letters)
                 values = block.values
                 sections = block.sections
         # A number as written that is already explicit and exact keeps its text (and skips a float round trip):
