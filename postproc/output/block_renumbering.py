@@ -39,7 +39,7 @@ A program number (Fanuc ``M98 P``, ``G65 P``) names a program, not a block: it i
 
 from __future__ import annotations
 
-from typing import Callable
+from typing import TYPE_CHECKING, Callable
 
 from ..errors import Location, ProgramError
 from ..interp.control import CONTROL, Goto, Return
@@ -47,19 +47,36 @@ from ..ir import Block, Section
 from ..ir.expr import Expr, Num
 from .block_references import PROFILE_RANGE, names_block_numbers
 
+if TYPE_CHECKING:
+    from ..setup.groups import OutputSettings
+
 def following(number: int, step: int, start: int, ceiling: int) -> int:
     """The number after ``number``: past ``ceiling`` (``numberMax``) back to ``start``, where ``start`` is under it."""
     after = number + step
     return start if after > ceiling >= start else after
 
 
+def refusal(number: int, limit: int, dialect: str, ceiling: int) -> str | None:
+    """Why the controller takes no block ``number`` (None: it does). ``limit``: the dialect's own largest
+    (``Writer.MAX_BLOCK_NUMBER``, grbl's; 0: none stated), else the set-up's ``numberMax`` (``ceiling``) is."""
+    if limit and number > limit:
+        return (f"--renumber numbers this block N{number}, above {limit}, the largest the {dialect} controller takes "
+                f"(it refuses the line): start or step lower")
+    if not limit and number > ceiling:  # (a START above it: nothing to wrap into)
+        return (f"--renumber numbers this block N{number}, above numberMax {ceiling}, the largest block number the "
+                f"set-up's controller takes (<Output numberMax>): start at {ceiling} or lower")
+    return None
+
+
 class Renumbering:
     """The first pass of one renumbering run: the number each block will carry, and the references'."""
 
-    def __init__(self, blocks: list[Block], start: int, step: int, takes_number: Callable[[Block], bool],
-                 ceiling: int) -> None:
-        """``takes_number``: the writer numbers this block (the rule its ``normalized`` follows); ``ceiling``:
-        the set-up's ``numberMax``, past which the numbering wraps to ``start`` (``following``)."""
+    def __init__(self, blocks: list[Block], start: int, output: "OutputSettings",
+                 takes_number: Callable[[Block], bool]) -> None:
+        """``output``: the set-up's, its ``renumberStep`` and its ``numberMax``, past which the numbering wraps to
+        ``start`` (``following``); ``takes_number``: the writer numbers this block (its ``normalized``'s rule)."""
+        step = output.renumber_step
+        ceiling = output.number_max
         self.blocks = blocks
         """The program, kept so every block's ``id`` names it until the run ends."""
         self.new: dict[int, int] = {}
@@ -76,6 +93,10 @@ class Renumbering:
         self.rewritten_ids: set[int] = set()
         """The referencing blocks the writer wrote through ``rewritten`` (or that it refused)."""
         self.ceiling = ceiling
+        self.start = start
+        self.step = step
+        self.next = start
+        """The number the writer's next numbered block gets (``take``, second pass)."""
         self.wrapped: tuple[Block, int] | None = None
         """The first block past ``numberMax`` and the number it would have got: the wrap renumbers it START."""
         self.wrap_refused = False
@@ -190,9 +211,16 @@ class Renumbering:
         self.references.append((block, target, new))
         return new
 
-    def numbered(self, block: Block, number: int) -> None:
-        """The writer wrote ``number`` on ``block`` (second pass)."""
+    def take(self, block: Block, limit: int, dialect: str, at: Callable[[Block], Location]) -> int:
+        """The number the writer writes on ``block``, the next (second pass); a located error where the controller
+        takes no such number (``refusal``: ``limit`` is the dialect's own, 0 none)."""
+        number = self.next
+        problem = refusal(number, limit, dialect, self.ceiling)
+        if problem is not None:
+            raise ProgramError(problem, at(block))
         self.actual[id(block)] = number
+        self.next = following(number, self.step, self.start, self.ceiling)
+        return number
 
     def check(self, at: Callable[[Block], Location]) -> list[ProgramError]:
         """After the run: a reference whose target was written with another number than the one it got, and a

@@ -103,10 +103,6 @@ class WordWriter(MotionWords):
         self.normalize = out.normalize or bool(renumber) or self.rounding
         """Renumbering and decimals per address rewrite the words, so they imply normalising."""
         self.renumber = renumber
-        self.renumber_start = renumber
-        self.renumber_step = out.renumber_step
-        self.number_max = out.number_max
-        """Past it the renumbering wraps to its start (``block_renumbering.following``)."""
         self.renumbering: Renumbering | None = None
         """The first pass of a renumbering run (``write``): the number each block gets, its references'."""
         self.copy_ok = source_dialect == self.DIALECT and not self.normalize and not self.renumber
@@ -135,8 +131,7 @@ class WordWriter(MotionWords):
             return
         from ..output.block_renumbering import Renumbering
         listed = list(blocks)
-        self.renumbering = Renumbering(listed, self.renumber, self.renumber_step, self.takes_number,
-                                       self.number_max)
+        self.renumbering = Renumbering(listed, self.renumber, self.ctx.setup.output, self.takes_number)
         super().write(listed, out)
         for error in self.renumbering.check(self.ctx.at):
             self.ctx.diagnostics.error(error)
@@ -150,8 +145,7 @@ class WordWriter(MotionWords):
         renumbering = self.renumbering
         if renumbering is None:  # (``normalized`` called without ``write``: a numbering of no references)
             from ..output.block_renumbering import Renumbering
-            renumbering = self.renumbering = Renumbering([], self.renumber, self.renumber_step, self.takes_number,
-                                                                self.number_max)
+            renumbering = self.renumbering = Renumbering([], self.renumber, self.ctx.setup.output, self.takes_number)
         return renumbering
 
     def native_block_reference(self, block: Block) -> str | None:
@@ -290,23 +284,12 @@ class WordWriter(MotionWords):
         return " ".join(parts)
 
     def take_number(self, block: Block) -> int:
-        """The number a renumbering run writes on ``block``, the next one (past ``numberMax`` back to the start:
-        ``block_renumbering.following``); a located error where the controller takes no such number."""
-        from ..output.block_renumbering import following  # (a renumbering run's module only)
-        renumber = self.renumber
-        if self.MAX_BLOCK_NUMBER and renumber > self.MAX_BLOCK_NUMBER:
+        """The number a renumbering run writes on ``block`` (``Renumbering.take``)."""
+        try:
+            return self.renumbering_pass().take(block, self.MAX_BLOCK_NUMBER, self.DIALECT, self.ctx.at)
+        except ProgramError:
             self.renumber = 0  # (refused once: the run has failed, the later blocks are not numbered)
-            raise ProgramError(f"--renumber numbers this block N{renumber}, above {self.MAX_BLOCK_NUMBER}, the "
-                               f"largest the {self.DIALECT} controller takes (it refuses the line): start or step "
-                               f"lower", self.ctx.at(block))
-        if not self.MAX_BLOCK_NUMBER and renumber > self.number_max:  # (a START above it: nothing to wrap into)
-            self.renumber = 0  # (refused once, as above)
-            raise ProgramError(f"--renumber numbers this block N{renumber}, above numberMax {self.number_max}, the "
-                               f"largest block number the set-up's controller takes (<Output numberMax>): start at "
-                               f"{self.number_max} or lower", self.ctx.at(block))
-        self.renumbering_pass().numbered(block, renumber)
-        self.renumber = following(renumber, self.renumber_step, self.renumber_start, self.number_max)
-        return renumber
+            raise
 
     def generate(self, block: Block) -> str:
         """Generate a block (and any lines a compound motion adds) from its sections; with
