@@ -93,3 +93,6 @@ def test_the_offset_after_a_reference_return_through_the_present_point(target: s
     report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="l.nc", file_out="out",
                           source="fanuc", target=target, setup=_setup(), tolerance=0.0)
     assert report.ok and report.max_deviation == 0.0, report.summary()
+    if target == "grbl":
+        from tests.support.grbl_rules import grbl_problems
+        assert grbl_problems(out.getvalue()) == []
