@@ -71,3 +71,28 @@ def test_an_incremental_move_that_takes_a_new_offset_is_refused() -> None:
     assert [str(e) for e in caught.value.errors] == [
         "l.nc:6:1: error: an incremental move takes a new lathe tool offset here, which the target has no way to "
         "apply: program X and Z absolutely"]
+
+
+@pytest.mark.parametrize(("target", "written"), [
+    # X50. (diameter) -> 25. + 2.54 = 27.54, Z 5. + 5.08 = 10.08; X40. -> 20. + 2.54 = 22.54
+    ("grbl", ["G18 G91 G28 X0. Z0.", "G90", "T2 M0 (TOOL CHANGE: LOAD T2, THEN CYCLE START)", "G0 X27.54 Z10.08",
+              "G1 X22.54 F200."]),
+    ("mach3", ["G18 G91 G28 X0.0000 Z0.0000", "G90", "T2 M6", "G0 X27.5400 Z10.0800", "G1 X22.5400 F200."]),
+])
+def test_the_offset_after_a_reference_return_through_the_present_point(target: str, written: list[str]) -> None:
+    """``G28 U0. W0.`` is written ``G91 G28 X0. Z0.`` and a ``G90`` block after it: the offsets follow that block
+    too, so the absolute move that takes ``T0202`` is one (was: refused as "an incremental move takes a new lathe
+    tool offset", the step never saw the G90)."""
+    program = "O0001\nG21 G18 G98\nG28 U0. W0.\nT0202\nG0 X50. Z5.\nG1 X40. F200.\nM30\n"
+    out = io.StringIO()
+    translate(io.StringIO(program), out, file="l.nc", source="fanuc", target=target, setup=_setup(),
+              diagnostics=Diagnostics(warn_stream=io.StringIO()), on_unsupported="error")
+    lines = out.getvalue().splitlines()
+    at = lines.index(written[0])
+    assert lines[at:at + len(written)] == written, lines
+    report = verify_lines(io.StringIO(program), io.StringIO(out.getvalue()), file_in="l.nc", file_out="out",
+                          source="fanuc", target=target, setup=_setup(), tolerance=0.0)
+    assert report.ok and report.max_deviation == 0.0, report.summary()
+    if target == "grbl":
+        from tests.support.grbl_rules import grbl_problems
+        assert grbl_problems(out.getvalue()) == []

@@ -8,7 +8,8 @@ every literal reference is written with its target's new number, checked by gold
 ``tests/golden/renumber/README.md``), by ``verify`` (the renumbered program moves as its source, move for move,
 loops and returns included) and by random programs; what cannot be rewritten exactly (a computed target, a
 missing or repeated number, a line the writer keeps as written, a GSK ``G65 H80`` macro jump) is refused,
-located; ``--renumber`` does not wrap at ``numberMax``, so no wrapped number lands on a target.
+located; past ``numberMax`` ``--renumber`` wraps to its start, refused where the wrap would give a referenced
+block's new number to a second block.
 ``<Output blockNumbers>`` (numbering the written lines) still refuses a program that names block numbers.
 Also: ``--renumber`` between two dialects numbers the written lines (``blockNumbers="all"``), and so does a
 set-up's ``renumberStart`` alone between two dialects (before: ignored, exit 0)."""
@@ -152,14 +153,56 @@ def test_a_return_to_a_repeated_number_is_refused() -> None:
         _translate(program, MachineSetup(output=OutputSettings(renumber_start=100)))
 
 
-def test_renumbering_does_not_wrap_at_number_max() -> None:
-    """``--renumber`` has no maximum (``numberMax`` is ``blockNumbers``' wrap): no new number repeats, so none
-    lands on a target's (``numberMax`` 20 from 10 by 5 would give N10 N15 N20 N10: the GOTO 1 two blocks)."""
-    program = "O1000\nN1 G0 X0. Y0. Z5.\nN2 G1 X1. F100.\nN3 G1 X2.\nN4 G1 X3.\nGOTO 1\nM30\n"
+JUMP_BACK = "O1000\nN1 G0 X0. Y0. Z5.\nN2 G1 X1. F100.\nN3 G1 X2.\nN4 G1 X3.\nGOTO 1\nM30\n"
+"""A jump to the first block (line 6 names N1)."""
+
+
+def test_a_wrap_that_would_repeat_a_referenced_number_is_refused_at_the_block_past_number_max() -> None:
+    """``numberMax`` 20 from 10 by 5: N10 N15 N20, then line 5 would be N25 and wraps to N10, which the first
+    block, the jump's target, already has (was: N25 and N30 written past ``numberMax``, exit 0)."""
     setup = MachineSetup(output=OutputSettings(renumber_start=10, renumber_step=5, number_max=20))
-    written = _translate(program, setup)
-    assert written.splitlines()[1:7] == ["N10 G0 X0. Y0. Z5.", "N15 G1 X1. F100.", "N20 G1 X2.", "N25 G1 X3.",
-                                         "GOTO 10", "N30 M30"]
+    with pytest.raises(ErrorList) as info:
+        _translate(JUMP_BACK, setup)
+    assert [str(e) for e in info.value.errors] == [
+        "t.nc:5:1: error: --renumber would number this block N25, past numberMax 20 (the largest block number the "
+        "set-up's controller takes), and wrapped back to N10 the numbering gives N10 to several blocks: the jump's "
+        "target on line 6, N1, would name more than one block. Renumber with a smaller START or STEP (or raise "
+        "numberMax, if the controller takes more digits)"]
+
+
+def test_a_wrap_that_leaves_every_referenced_number_single_is_written_and_moves_the_same() -> None:
+    """``numberMax`` 30 from 10 by 10: N10 N20 N30, then N10 N20 again; the jump's target N5 became N30, on one
+    block only, so the wrap is exact (worked out by hand; the jump skips the X9. move)."""
+    program = "O1000\nG0 X0. Y0. Z5.\nGOTO 5\nG1 X9. F100.\nN5 G1 X2. F100.\nG1 X3.\nM30\n"
+    written = _translate(program, MachineSetup(output=OutputSettings(renumber_start=10, renumber_step=10,
+                                                                     number_max=30)))
+    assert written.splitlines()[1:7] == ["N10 G0 X0. Y0. Z5.", "GOTO 30", "N20 G1 X9. F100.", "N30 G1 X2. F100.",
+                                         "N10 G1 X3.", "N20 M30"]
+    _verified(program, written, MachineSetup())
+
+
+def test_renumbering_past_five_digits_wraps_where_nothing_names_a_block(tmp_path: Path) -> None:
+    """A Fanuc's N address takes five digits (``numberMax`` 99999 by default): from 99980 by 10 the third block
+    wraps to N99980, and so on (was: N100000, an alarm on the controller, exit 0)."""
+    source = tmp_path / "in.nc"
+    source.write_text(PLAIN)
+    written = tmp_path / "out.nc"
+    assert main(["translate", str(source), "--from", "fanuc", "--to", "fanuc", "--renumber", "99980,10",
+                 "-o", str(written)]) == 0
+    numbers = re.findall(r"^N(\d+) ", written.read_text(), re.M)
+    assert numbers == ["99980", "99990"] * 3
+    report = verify_lines(PLAIN.splitlines(keepends=True), written.read_text().splitlines(keepends=True),
+                          file_in="in.nc", file_out="out.nc", source="fanuc", target="fanuc", setup=MachineSetup())
+    assert report.ok and report.max_deviation == 0.0, report.summary()
+
+
+def test_a_start_above_number_max_is_refused_at_the_first_block() -> None:
+    """Nothing to wrap into: N100000 is already past what the controller takes."""
+    with pytest.raises(ErrorList) as info:
+        _translate(PLAIN, MachineSetup(output=OutputSettings(renumber_start=100000)))
+    assert [str(e) for e in info.value.errors] == [
+        "t.nc:2:1: error: --renumber numbers this block N100000, above numberMax 99999, the largest block number "
+        "the set-up's controller takes (<Output numberMax>): start at 99999 or lower"]
 
 
 def test_a_program_number_is_not_a_block_number() -> None:

@@ -233,6 +233,12 @@ def _lower(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iter
                     yield block
                     back = Block(block.line, None, block.eol)
                     back.add(DistanceMode("absolute"))
+                    if offsets is not None:
+                        # the offsets follow the distance mode block by block: without this block they took the
+                        # program for incremental from the reference return on (was: ``G28 U0. W0.`` then
+                        # ``T0202`` / ``G0 X50. Z5.`` refused as "an incremental move takes a new lathe tool
+                        # offset" towards grbl, though every move is absolute)
+                        _report(offsets.block, back, ctx, tracker)
                     yield back  # the reference return went in incremental mode: back to absolute
                     continue
         except UnsupportedError as err:

@@ -22,16 +22,24 @@ What cannot be rewritten exactly is refused, located at the reference:
   a block of a caller not known here. The renumbering gives the blocks different numbers and the reference
   can only name one: refused rather than guessed;
 * a new number that the program writes on more than one block (a block the writer does not number keeps
-  its own, which may be a target's new one). ``--renumber`` has no maximum and does not wrap at
-  ``numberMax`` (only ``<Output blockNumbers>``'s numbering of the written lines does, and it refuses every
-  program that names block numbers): no wrapped number can land on a target.
+  its own, which may be a target's new one).
+
+Past the set-up's ``numberMax`` (the largest number its controller takes: a Fanuc's or LinuxCNC's N address
+has five digits, a sixth is an alarm) the numbering wraps back to START (``following``), as
+``<Output blockNumbers>``'s numbering of the written lines does. A wrap gives a number to a second block,
+which is harmless where nothing names it (a block number is then a label) but makes a reference ambiguous
+where its target's new number comes round again: that is refused, once, located at the first block past
+``numberMax`` (the one the wrap renumbers: ``wrapped``). A START above ``numberMax`` leaves nothing to wrap
+into and is not wrapped (the writer refuses its first block where the dialect states no limit of its own,
+and grbl's 10,000,000 stands: ``Writer.MAX_BLOCK_NUMBER``). (Was: no maximum, N100000 written for a Fanuc,
+exit 0.)
 
 A program number (Fanuc ``M98 P``, ``G65 P``) names a program, not a block: it is not rewritten.
 """
 
 from __future__ import annotations
 
-from typing import Callable
+from typing import TYPE_CHECKING, Callable
 
 from ..errors import Location, ProgramError
 from ..interp.control import CONTROL, Goto, Return
@@ -39,17 +47,43 @@ from ..ir import Block, Section
 from ..ir.expr import Expr, Num
 from .block_references import PROFILE_RANGE, names_block_numbers
 
+if TYPE_CHECKING:
+    from ..setup.groups import OutputSettings
+
+
 def takes_number(block: Block) -> bool:
     """A renumbering run numbers this block (the writer's ``normalized`` does: a line of the dialect with words
     that opens no program)."""
     return block.text is not None and bool(block.words) and "ProgramStart" not in block.sections
 
 
+def following(number: int, step: int, start: int, ceiling: int) -> int:
+    """The number after ``number``: past ``ceiling`` (``numberMax``) back to ``start``, where ``start`` is under it."""
+    after = number + step
+    return start if after > ceiling >= start else after
+
+
+def refusal(number: int, limit: int, dialect: str, ceiling: int) -> str | None:
+    """Why the controller takes no block ``number`` (None: it does). ``limit``: the dialect's own largest
+    (``Writer.MAX_BLOCK_NUMBER``, grbl's; 0: none stated), else the set-up's ``numberMax`` (``ceiling``) is."""
+    if limit and number > limit:
+        return (f"--renumber numbers this block N{number}, above {limit}, the largest the {dialect} controller takes "
+                f"(it refuses the line): start or step lower")
+    if not limit and number > ceiling:  # (a START above it: nothing to wrap into)
+        return (f"--renumber numbers this block N{number}, above numberMax {ceiling}, the largest block number the "
+                f"set-up's controller takes (<Output numberMax>): start at {ceiling} or lower")
+    return None
+
+
 class Renumbering:
     """The first pass of one renumbering run: the number each block will carry, and the references'."""
 
-    def __init__(self, blocks: list[Block], start: int, step: int, takes_number: Callable[[Block], bool]) -> None:
-        """``takes_number``: the writer numbers this block (the rule its ``normalized`` follows)."""
+    def __init__(self, blocks: list[Block], start: int, output: "OutputSettings",
+                 takes_number: Callable[[Block], bool]) -> None:
+        """``output``: the set-up's, its ``renumberStep`` and its ``numberMax``, past which the numbering wraps to
+        ``start`` (``following``); ``takes_number``: the writer numbers this block (its ``normalized``'s rule)."""
+        step = output.renumber_step
+        ceiling = output.number_max
         self.blocks = blocks
         """The program, kept so every block's ``id`` names it until the run ends."""
         self.new: dict[int, int] = {}
@@ -65,6 +99,21 @@ class Renumbering:
         """(referencing block, target block, the number written for it): checked after the run."""
         self.rewritten_ids: set[int] = set()
         """The referencing blocks the writer wrote through ``rewritten`` (or that it refused)."""
+        self.ceiling = ceiling
+        self.start = start
+        self.step = step
+        self.next = start
+        """The number the writer's next numbered block gets (``take``, second pass)."""
+        self.wrapped: tuple[Block, int] | None = None
+        """The first block past ``numberMax`` and the number it would have got: the wrap renumbers it START."""
+        self.wrap_refused = False
+        """A reference the wrap made ambiguous was refused (once a run: the run has failed)."""
+        self.at: Callable[[Block, str | None], Location] = lambda block, letter: Location("", block.line, 1)
+        """Where a block's word is (``rewritten``'s ``at``, kept for a refusal located at another block)."""
+        self.numbered_times: dict[int, int] = {}
+        """Number -> how many blocks the numbering gives it (more than one only past a wrap)."""
+        passed: int | None = None
+        """The number past ``numberMax`` the last block would have been followed by."""
         number = start
         for block in blocks:
             sequence = block.sections.get("Sequence")
@@ -72,8 +121,13 @@ class Renumbering:
             if isinstance(old, int):
                 self.by_old.setdefault(old, []).append(block)
             if takes_number(block):
+                if passed is not None and self.wrapped is None:
+                    self.wrapped = (block, passed)
                 self.new[id(block)] = mark = number
-                number += step
+                self.numbered_times[mark] = self.numbered_times.get(mark, 0) + 1
+                after = following(number, step, start, ceiling)
+                passed = number + step if after != number + step else None
+                number = after
             elif isinstance(old, int):
                 mark = old
             else:
@@ -88,6 +142,7 @@ class Renumbering:
         ``nf``), the writer's family's spelling. Raises the located ``ProgramError`` of the first
         reference that cannot be rewritten exactly."""
         self.rewritten_ids.add(id(block))  # (written through here: refused here, or rewritten)
+        self.at = at
         sections = dict(block.sections)
         replaced: dict[str, int] = {}
         control = sections.get(CONTROL)
@@ -147,15 +202,32 @@ class Renumbering:
         if new is None:
             raise ProgramError(f"--renumber cannot rewrite {what} N{old}: its block (line {target.line}) is not "
                                f"renumbered and keeps its number", where)
+        if self.written_numbers.get(new, 0) > 1 and self.numbered_times.get(new, 0) > 1 and self.wrapped is not None:
+            past, would = self.wrapped
+            if self.wrap_refused:
+                return new  # (refused once, at the wrap: the run has failed)
+            self.wrap_refused = True
+            raise ProgramError(f"--renumber would number this block N{would}, past numberMax {self.ceiling} (the largest "
+                               f"block number the set-up's controller takes), and wrapped back to N{self.new[id(past)]} "
+                               f"the numbering gives N{new} to several blocks: {what} on line {block.line}, N{old}, "
+                               f"would name more than one block. Renumber with a smaller START or STEP (or raise "
+                               f"numberMax, if the controller takes more digits)", self.at(past, None))
         if self.written_numbers.get(new, 0) > 1:
             raise ProgramError(f"--renumber cannot rewrite {what} N{old}: its new number N{new} would be on several "
                                f"blocks (a block that is not renumbered keeps that number)", where)
         self.references.append((block, target, new))
         return new
 
-    def numbered(self, block: Block, number: int) -> None:
-        """The writer wrote ``number`` on ``block`` (second pass)."""
+    def take(self, block: Block, limit: int, dialect: str, at: Callable[[Block], Location]) -> int:
+        """The number the writer writes on ``block``, the next (second pass); a located error where the controller
+        takes no such number (``refusal``: ``limit`` is the dialect's own, 0 none)."""
+        number = self.next
+        problem = refusal(number, limit, dialect, self.ceiling)
+        if problem is not None:
+            raise ProgramError(problem, at(block))
         self.actual[id(block)] = number
+        self.next = following(number, self.step, self.start, self.ceiling)
+        return number
 
     def check(self, at: Callable[[Block], Location]) -> list[ProgramError]:
         """After the run: a reference whose target was written with another number than the one it got, and a

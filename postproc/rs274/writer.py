@@ -103,7 +103,6 @@ class WordWriter(MotionWords):
         self.normalize = out.normalize or bool(renumber) or self.rounding
         """Renumbering and decimals per address rewrite the words, so they imply normalising."""
         self.renumber = renumber
-        self.renumber_step = out.renumber_step
         self.renumbering: Renumbering | None = None
         """The first pass of a renumbering run (``write``): the number each block gets, its references'."""
         self.copy_ok = source_dialect == self.DIALECT and not self.normalize and not self.renumber
@@ -132,7 +131,7 @@ class WordWriter(MotionWords):
             return
         from ..output.block_renumbering import Renumbering, takes_number
         listed = list(blocks)
-        self.renumbering = Renumbering(listed, self.renumber, self.renumber_step, takes_number)
+        self.renumbering = Renumbering(listed, self.renumber, self.ctx.setup.output, takes_number)
         super().write(listed, out)
         for error in self.renumbering.check(self.ctx.at):
             self.ctx.diagnostics.error(error)
@@ -141,7 +140,7 @@ class WordWriter(MotionWords):
         renumbering = self.renumbering
         if renumbering is None:  # (``normalized`` called without ``write``: a numbering of no references)
             from ..output.block_renumbering import Renumbering, takes_number
-            renumbering = self.renumbering = Renumbering([], self.renumber, self.renumber_step, takes_number)
+            renumbering = self.renumbering = Renumbering([], self.renumber, self.ctx.setup.output, takes_number)
         return renumbering
 
     def native_block_reference(self, block: Block) -> str | None:
@@ -258,14 +257,7 @@ class WordWriter(MotionWords):
             else:  # a canonical number, or an expression, keeps its text
                 parts.append(up + num)
         if renumber and block.words and "ProgramStart" not in sections:
-            if self.MAX_BLOCK_NUMBER and renumber > self.MAX_BLOCK_NUMBER:
-                self.renumber = 0  # (refused once: the run has failed, the later blocks are not numbered)
-                raise ProgramError(f"--renumber numbers this block N{renumber}, above {self.MAX_BLOCK_NUMBER}, the "
-                                   f"largest the {self.DIALECT} controller takes (it refuses the line): start or step "
-                                   f"lower", self.ctx.at(block))
-            parts.insert(1 if skip is not None else 0, f"N{renumber}")
-            self.renumbering_pass().numbered(source_block, renumber)
-            self.renumber = renumber + self.renumber_step
+            parts.insert(1 if skip is not None else 0, f"N{self.take_number(source_block)}")
         if ASSIGN in sections or CONTROL in sections:
             at = 1 if skip is not None else 0
             if len(parts) > at and parts[at][:1] == "N":
@@ -275,6 +267,14 @@ class WordWriter(MotionWords):
         if comments is not None:
             parts.extend(self.comment(t) for t in comments.texts)  # type: ignore[attr-defined]
         return " ".join(parts)
+
+    def take_number(self, block: Block) -> int:
+        """The number a renumbering run writes on ``block`` (``Renumbering.take``)."""
+        try:
+            return self.renumbering_pass().take(block, self.MAX_BLOCK_NUMBER, self.DIALECT, self.ctx.at)
+        except ProgramError:
+            self.renumber = 0  # (refused once: the run has failed, the later blocks are not numbered)
+            raise
 
     def generate(self, block: Block) -> str:
         """Generate a block (and any lines a compound motion adds) from its sections; with

@@ -406,11 +406,9 @@ class LinuxcncWriter(WordWriter):
         if text is not None and ("@" in text or "^" in text):
             from .polar import has_polar_words, renumbered  # (loaded for such a line only)
             if has_polar_words(text):
-                number = self.renumber
-                if not number:
+                if not self.renumber:
                     return text.strip()
-                self.renumber = number + self.renumber_step
-                return renumbered(text.strip(), number)
+                return renumbered(text.strip(), self.take_number(block))
         comments = cast("Comments | None", block.sections.get("Comments"))
         tail = None if comments is None or self.comment_rule is not None else semicolon_comment(comments)
         if comments is None or tail is None:
