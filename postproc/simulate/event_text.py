@@ -43,16 +43,19 @@ _FIRST: Final = [f".{n:03d}" for n in range(_TABLED)]
 """The point and a number's first three decimals, the others following."""
 _REST: Final = [f"{n:03d}".rstrip("0") for n in range(_TABLED)]
 """Decimals four to six (trailing zeros dropped; never all zero where used)."""
-_ONLY: Final = [f".{n:03d}".rstrip("0") for n in range(_TABLED)]
-"""The point and a number's first three decimals, the last ones (trailing zeros dropped; never all zero where used)."""
-_DIGITS: Final = [str(n) for n in range(10)]
 _SHORT_STEP: Final = 100
-_SHORT: Final[list[str | None]] = [".0"] + [None] * (_UNITS // _SHORT_STEP - 1)
+_PAIRS: Final = 100
+_PAIR_FIRST: Final = [f".{n:02d}" for n in range(_PAIRS)]
 """A fraction of at most four decimals (a whole number of ``_SHORT_STEP`` millionths, as a CAM program writes its
-coordinates) -> the point and its decimals (``".9596"``; ``".0"`` for none: an integral float below 1e16, which
-repr writes with its digits and ".0"), made the first time it is met: one piece of the line
-where there were two (compiled, each piece costs an append and its share of the join and of the list's clearing,
-~100 instructions), with no division into thousandths."""
+coordinates), in ten-thousandths: its point and first two decimals where two follow (``".95"`` of ``.9596``)..."""
+_PAIR_REST: Final = [f"{n:02d}".rstrip("0") for n in range(_PAIRS)]
+"""... then those two (trailing zeros dropped; never 0 where used) ..."""
+_PAIR_ONLY: Final = [".0"] + [f".{n:02d}".rstrip("0") for n in range(1, _PAIRS)]
+"""... or the point and its first two decimals alone (``".0"`` for none: an integral float below 1e16, which repr
+writes with its digits and ".0"). Tables of a hundred short texts, not one of ten thousand made as met: a piece
+more a number (~110 instructions) but tables that stay in the first-level cache, where the big one's texts,
+met at random, missed the cache at each look-up (``perf record`` at 300k blocks: a tenth of ``toolpath``'s
+time in one increment of the looked-up text's reference count)."""
 _WHOLE: Final = [str(n) for n in range(_TABLED)]
 _NEGATIVE: Final = [f"-{n}" for n in range(_TABLED)]
 """A number's whole part below 1000 (a CAM coordinate's), with its sign."""
@@ -107,27 +110,20 @@ def _float_parts(value: float, parts: list[str]) -> None:
 
 def _fraction_parts(fraction: i64, parts: list[str]) -> None:
     """Append the point and the decimals of ``fraction`` millionths (``_float_parts``' number after its whole part):
-    one piece where they are at most four (``_SHORT``), else two (the first three decimals and the rest)."""
+    one or two pieces where they are at most four (``_PAIR_*``), else two (the first three decimals and the rest)."""
     if fraction % _SHORT_STEP == 0:
         index = fraction // _SHORT_STEP
-        text = _SHORT[index]
-        if text is None:
-            text = _short_text(index)
-        parts.append(text)
+        high = index // _PAIRS
+        low = index - high * _PAIRS
+        if low == 0:
+            parts.append(_PAIR_ONLY[high])
+        else:
+            parts.append(_PAIR_FIRST[high])
+            parts.append(_PAIR_REST[low])
         return
     high = fraction // _TABLED
     parts.append(_FIRST[high])
     parts.append(_REST[fraction - high * _TABLED])  # (never 0: the fraction is no multiple of _SHORT_STEP)
-
-
-def _short_text(index: i64) -> str:
-    """The point and the decimals of ``index`` ten-thousandths (not 0), kept in ``_SHORT``: its first three
-    decimals, then its fourth where it is not 0 (trailing zeros dropped)."""
-    high = index // 10
-    digit = index - high * 10
-    text = _ONLY[high] if digit == 0 else _FIRST[high] + _DIGITS[digit]
-    _SHORT[index] = text
-    return text
 
 
 def _key_text(key: str, later: bool) -> str:
@@ -360,12 +356,19 @@ def _keyed_float_parts(value: float, keyed: _KeyedNumbers, parts: list[str], tai
                 fraction = magnitude - whole * _UNITS
                 if fraction % _SHORT_STEP == 0:  # ``_fraction_parts``' first case here: a call less a number
                     index = fraction // _SHORT_STEP
+                    high = index // _PAIRS
+                    low = index - high * _PAIRS
                     if tail is None:
-                        text = _SHORT[index]
-                        parts.append(text if text is not None else _short_text(index))
+                        if low == 0:
+                            parts.append(_PAIR_ONLY[high])
+                        else:
+                            parts.append(_PAIR_FIRST[high])
+                            parts.append(_PAIR_REST[low])
+                    elif low == 0:
+                        parts.append(tail.onlys[high])
                     else:
-                        text = tail.shorts[index]
-                        parts.append(text if text is not None else tail.short(index))
+                        parts.append(_PAIR_FIRST[high])
+                        parts.append(tail.rests[low])
                     return
                 _fraction_parts(fraction, parts)
                 if tail is not None:
@@ -379,19 +382,13 @@ def _keyed_float_parts(value: float, keyed: _KeyedNumbers, parts: list[str], tai
 
 @mypyc_attr(allow_interpreted_subclasses=True)
 class _Tail:
-    """A fixed text that follows a number in a line (a record's closing), and ``_SHORT``'s fractions joined with it
-    (``shorts``, each made the first time met): one piece where there were two."""
+    """A fixed text that follows a number in a line (a record's closing), joined with the short fractions' last
+    pieces (``_PAIR_ONLY``, ``_PAIR_REST``): one piece where there were two."""
 
     def __init__(self, text: str) -> None:
         self.text = text
-        self.shorts: list[str | None] = [None] * (_UNITS // _SHORT_STEP)
-
-    def short(self, index: i64) -> str:
-        """The point and the decimals of ``index`` ten-thousandths followed by ``text``, kept in ``shorts``."""
-        short = _SHORT[index]
-        text = (short if short is not None else _short_text(index)) + self.text
-        self.shorts[index] = text
-        return text
+        self.onlys: list[str] = [only + text for only in _PAIR_ONLY]
+        self.rests: list[str] = [rest + text for rest in _PAIR_REST]
 
 
 _LINE_HIGH: Final[list[str | None]] = [None] * _TABLED
