@@ -249,3 +249,59 @@ def test_only_a_build_runs_mypyc(tmp_path: Path, monkeypatch: pytest.MonkeyPatch
     argument lists are setuptools' own (``setuptools.build_meta``)."""
     setup = _setup_module(monkeypatch, tmp_path)
     assert setup.metadata_only(argv) is only  # type: ignore[attr-defined]
+
+
+@pytest.mark.parametrize("value,flags", [
+    ("", None),  # a plain build: no profile flag
+    ("generate", "-fprofile-generate"),
+    ("use", "-fprofile-use"),
+])
+def test_a_profile_phase_adds_its_flags(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, value: str,
+                                        flags: str | None) -> None:
+    """``make compile``'s profile-guided build (``POSTPROC_PGO``): each phase compiles and links every extension
+    with its gcc flags, into the one objects folder both phases share (pip's editable build would use a new
+    temporary folder each time, and the second phase would not find the first's counts); a plain build adds none.
+    A phase never leaves an older training's counts to mix with a new one."""
+    from types import SimpleNamespace
+    setup = _setup_module(monkeypatch, tmp_path)
+    objects = tmp_path / "build" / "objects"
+    monkeypatch.setattr(setup, "OBJECTS", objects)
+    stale = objects / "x" / "old.gcda"
+    stale.parent.mkdir(parents=True)
+    stale.write_bytes(b"")
+    monkeypatch.setenv("POSTPROC_PGO", value)
+    monkeypatch.setattr(setup, "is_gcc", lambda command: True)
+    monkeypatch.setattr(setup.build_ext, "build_extensions", lambda self: None)  # type: ignore[attr-defined]
+    ext = SimpleNamespace(extra_compile_args=["-O3"], extra_link_args=[])
+    build = setup.BuildCompiled.__new__(setup.BuildCompiled)  # type: ignore[attr-defined]
+    build.compiler, build.extensions, build.build_temp = None, [ext], "/tmp/elsewhere"
+    build.build_extensions()
+    assert build.build_temp == str(objects)
+    if flags is None:
+        assert ext.extra_compile_args == ["-O3"] and ext.extra_link_args == []
+    else:
+        assert flags in ext.extra_compile_args and flags in ext.extra_link_args
+        assert ext.extra_compile_args[0] == "-O3"  # (after mypyc's own: the profile's flags come last)
+    assert stale.exists() is (value != "generate")
+
+
+def test_an_unknown_profile_phase_is_refused(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A misspelt ``POSTPROC_PGO`` stops the build with the values it takes, not a silently plain build."""
+    setup = _setup_module(monkeypatch, tmp_path)
+    monkeypatch.setenv("POSTPROC_PGO", "generat")
+    with pytest.raises(SystemExit, match="generate"):
+        setup.pgo_phase()  # type: ignore[attr-defined]
+
+
+def test_the_profile_phases_need_gcc(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """clang takes other profile flags and files, so its build is plain: ``is_gcc`` asks the compiler itself
+    (a compiler that cannot be run is not gcc)."""
+    setup = _setup_module(monkeypatch, tmp_path)
+    fake = tmp_path / "cc"
+    fake.write_text("#!/bin/sh\necho 'Debian clang version 14.0.6'\n", encoding="utf-8")
+    fake.chmod(0o755)
+    assert setup.is_gcc([str(fake)]) is False  # type: ignore[attr-defined]
+    fake.write_text("#!/bin/sh\necho 'gcc (Debian 12.2.0-14) 12.2.0'\necho 'This is free software; "
+                    "Copyright (C) 2022 Free Software Foundation, Inc.'\n", encoding="utf-8")
+    assert setup.is_gcc([str(fake)]) is True  # type: ignore[attr-defined]
+    assert setup.is_gcc([str(tmp_path / "missing")]) is False  # type: ignore[attr-defined]
