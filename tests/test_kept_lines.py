@@ -43,3 +43,12 @@ def test_drops_across_chunks_as_a_deque_does() -> None:
             reference.append(item)
             if n % 50 == 0 or n == len(items):
                 assert list(kept) == list(reference) and len(kept) == len(reference), (maxlen, n)
+
+
+def test_a_chunk_with_one_line_break_inside_a_line_is_kept_as_lines() -> None:
+    for at in (0, CHUNK // 2, CHUNK - 1):
+        items: list[Kept] = [f"N{i}" if i != at else "N1 \\\nX2." for i in range(CHUNK + 1)]
+        kept = KeptLines(4 * CHUNK)
+        for item in items:
+            kept.append(item)
+        assert type(kept.chunks[0]) is list and list(kept) == items, at

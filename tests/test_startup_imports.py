@@ -97,6 +97,16 @@ def test_a_one_line_translation_loads_nothing_it_does_not_use(tmp_path: Path, on
     assert [name for name in NEVER_BY_DEFAULT if loaded(modules, name)] == []
 
 
+def test_a_program_number_loads_the_structure_check_but_not_decimal(tmp_path: Path) -> None:
+    """A program with a program number is shown to the structure check (``postproc.interp.structure``), whose
+    expression module imports ``decimal`` only where it rounds to an increment (~1 ms of start-up)."""
+    path = tmp_path / "numbered.nc"
+    path.write_text("%\nO1234\nN10 G0 X1. Y2.\nN20 M30\n%\n")
+    modules = modules_after(tmp_path, "translate", str(path), "--from", "fanuc", "--to", "linuxcnc")
+    assert "postproc.interp.structure" in modules  # the check ran
+    assert not loaded(modules, "decimal")
+
+
 def test_a_plain_translation_loads_no_transform_lathe_or_target_reader(tmp_path: Path, one_line: Path) -> None:
     modules = modules_after(tmp_path, "translate", str(one_line), "--from", "fanuc", "--to", "linuxcnc")
     assert "postproc.api" in modules and "postproc_linuxcnc.writer" in modules  # the probe saw the run

@@ -15,8 +15,6 @@ Choices where the manuals leave room (documented, tested):
 
 from __future__ import annotations
 
-from typing import Final
-
 from postproc.context import Context
 from postproc.interp.control import CONTROL, Call, ModalCall, ModalCallCancel, Return
 from postproc.errors import ParseError
@@ -25,23 +23,9 @@ from postproc.ir import Block, Section
 from postproc.rs274.block_syntax import DECIMAL_LETTERS
 
 from .arguments import LETTER_LOCALS, LOCAL_LETTERS
+from .call_codes import CALL_CODES as _CALL_CODES, makes_call
 
 __all__ = ["LETTER_LOCALS", "LOCAL_LETTERS", "makes_call", "read_call"]
-
-_CALL_CODES = {("M", "98"), ("M", "99"), ("G", "65"), ("G", "66"), ("G", "67")}
-_CALL_NUMBERS: Final = frozenset(num for _, num in _CALL_CODES)
-
-
-def makes_call(words: list[tuple[str, str]]) -> bool:
-    """Whether a block of these words may make a call or return (``read_call`` then reads it): a G or M word
-    whose number, its leading zeros left out, is a call's. Judged on the words, never on the text: the reader
-    takes ``M098`` for M98 as ``codes.py`` takes ``G000`` for G0, and the lexer reads ``M 98`` and ``g65`` as the
-    words M98 and G65, so a test on the text (``"M9" in text``) left those calls as plain codes. A word the test
-    passes that is no call (``g98``) costs ``read_call`` one look at the block."""
-    for letter, num in words:
-        if letter in "GgMm" and num.lstrip("0") in _CALL_NUMBERS:
-            return True
-    return False
 
 
 def _code(letter: str, num: str) -> tuple[str, str] | None:

@@ -18,7 +18,8 @@ from postproc.syntaxes.lines import BOM, EOF_BYTE, lexable
 from postproc.rs274.canonical_line import CANONICAL, CODES, LEXED, scan_marks
 from postproc.rs274.lexer import lex_block
 
-from .macro import makes_call, read_call
+from .call_codes import makes_call
+from .macro import read_call
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)

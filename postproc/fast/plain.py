@@ -291,32 +291,40 @@ def span_decimal(text: str, start: i64, end: i64) -> float | None:
     """``decimal_value`` of ``text[start:end]`` where it has a decimal point (None where it has none), read where
     it stands: an optional minus, digits with one point (``postproc.numbers.decimal_value``'s exact quotient,
     which reads any other spelling, or more digits than it computes itself)."""
+    # Two loops, the whole digits' and the places', so that a digit costs no test of which part it is in (the
+    # digits are counted from the positions).
     i = start
     negative = i < end and ord(text[i]) == 45  # '-'
     if negative:
         i += 1
+    first = i
     mantissa: i64 = 0
-    digits: i64 = 0
-    places: i64 = -1
+    c: i64 = 0
+    while i < end:
+        c = ord(text[i])
+        if c < 48 or c > 57:
+            break
+        mantissa = mantissa * 10 + (c - 48)
+        i += 1
+    if i == end or c != 46:  # no point, or another character
+        return None
+    whole = i - first
+    i += 1
+    point = i
     scale = 1.0  # ten to the places read (exact: at most DECIMAL_DIGITS places reach the division)
     while i < end:
-        c: i64 = ord(text[i])
-        if 48 <= c <= 57:
-            mantissa = mantissa * 10 + (c - 48)
-            digits += 1
-            if places >= 0:
-                places += 1
-                scale = scale * 10.0
-        elif c == 46 and places < 0:  # '.'
-            places = 0
-        else:
+        c = ord(text[i])
+        if c < 48 or c > 57:
             return None
+        mantissa = mantissa * 10 + (c - 48)
+        scale = scale * 10.0
         i += 1
-    if places < 0 or digits == 0:
+    digits = whole + (i - point)
+    if digits == 0:
         return None
     if digits > DECIMAL_DIGITS:
         return decimal_value(text[start:end])
-    value = float(mantissa) / scale if places > 0 else float(mantissa)
+    value = float(mantissa) / scale if i > point else float(mantissa)
     return -value if negative else value
 
 

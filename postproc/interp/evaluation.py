@@ -77,7 +77,6 @@ an error. Results are never None except for a bare variable; NaN and infinities 
 from __future__ import annotations
 
 import math
-from decimal import ROUND_HALF_UP, Decimal
 from typing import Callable
 
 from . import long_double
@@ -297,7 +296,10 @@ def _round_half_away(x: float) -> float:
 
 def _round_to_increment(x: float, inc: float) -> float:
     """Half away from zero on the decimal spelling (-1.0005 -> -1.001 at 0.001, which binary
-    division would get wrong: -1.0005/0.001 = -1000.4999...)."""
+    division would get wrong: -1.0005/0.001 = -1000.4999...). ``decimal`` is imported here, where it is used: the
+    module is loaded by the structure check of every program with a program number, and ``decimal`` cost that
+    ~1 ms of start-up (``python -X importtime``)."""
+    from decimal import ROUND_HALF_UP, Decimal
     steps = (Decimal(repr(x)) / Decimal(repr(inc))).quantize(Decimal(1), rounding=ROUND_HALF_UP)
     return float(steps * Decimal(repr(inc)))
 
