@@ -118,7 +118,12 @@ def test_as_written_is_num_leaving_a_float_as_it_is(value: float) -> None:
 @given(values=st.lists(st.one_of(_near_ties(), _near_ties().map(num).map(float), st.integers(-5, 5).map(float)),
                        max_size=6))
 def test_all_as_written_is_every_value_as_written(values: list[float]) -> None:
-    assert all_as_written(values) is all(_written_as_is(v) for v in values)
+    """Below 1e8 exactly each value as written; a list holding a value beyond it is never (as for one value:
+    ``test_as_written_is_num_leaving_a_float_as_it_is``; hypothesis found ``[100000000.000001]``)."""
+    if all(abs(v) < 1e8 for v in values):
+        assert all_as_written(values) is all(_written_as_is(v) for v in values)
+    else:
+        assert not all_as_written(values)
 
 
 @pytest.mark.parametrize("text", ["0.3008", "-3.956", "-41.6654", "12.5", "0.000001", "99999999.999999"])

@@ -59,6 +59,8 @@ time in one increment of the looked-up text's reference count)."""
 _WHOLE: Final = [str(n) for n in range(_TABLED)]
 _NEGATIVE: Final = [f"-{n}" for n in range(_TABLED)]
 """A number's whole part below 1000 (a CAM coordinate's), with its sign."""
+_PADDED: Final = [f"{n:03d}" for n in range(_TABLED)]
+"""A line number's last three digits (``_KindTexts.padded``)."""
 _KEYS: Final[dict[str, str]] = {}
 """Key -> its text as an object's first item, with the object's opening brace (``'{"line": '``): a toolpath
 has a dozen keys."""
@@ -282,13 +284,17 @@ class _KeyTexts:
 @mypyc_attr(allow_interpreted_subclasses=True)
 class _KindTexts:
     """A move kind's text (``', "move": "feed"'``) joined with the line number before it: ``'{"line": 80, "move":
-    "feed"'`` for a line below ``_TABLED``, the last three digits with it (``'345, "move": "feed"'``) for one below
-    ``_LINES_TABLED`` (``_LINE_HIGH`` before them); each made the first time met."""
+    "feed"'`` for a line below ``_TABLED`` (made the first time met), the last three digits with it (``'345, "move":
+    "feed"'``) for one below ``_LINES_TABLED`` (``_LINE_HIGH`` before them). The latter are made all at once, in
+    order, when the kind is first met: a program's lines come in order, so each text is met once every thousand
+    lines, long out of the cache; made one after another they lie one after another in memory, where the
+    processor fetches the next before it is read (made as met, each lay wherever the blocks of its time left room:
+    perf at 300k blocks, ~2% of ``toolpath``'s time in the reference-count increment of the text looked up)."""
 
     def __init__(self, text: str) -> None:
         self.text = text
         self.low: list[str | None] = [None] * _TABLED
-        self.padded: list[str | None] = [None] * _TABLED
+        self.padded: list[str] = [_PADDED[n] + text for n in range(_TABLED)]
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -306,13 +312,25 @@ class _KeyedNumbers:
         """The same for a negative number's whole part (``', "x": -0'``)."""
 
     def whole(self, whole: int, negative: bool) -> str:
-        """The key's text with the whole part ``whole`` (below ``_TABLED``), its sign before it where ``negative``."""
+        """The key's text with the whole part ``whole`` (below ``_TABLED``), its sign before it where ``negative``.
+        Made with the others of its ``_KEYED_RUN`` (its neighbours: a CAM program's next points), one after another:
+        made one at a time as met, each lay wherever the blocks of its time left room, and missed the cache at
+        each look-up (perf at 300k blocks: ~3% of ``toolpath``'s time in its reference-count increment)."""
         table = self.negatives if negative else self.wholes
         piece = table[whole]
         if piece is None:
-            piece = self.text + (_NEGATIVE[whole] if negative else _WHOLE[whole])
-            table[whole] = piece
+            text = self.text
+            first = whole - whole % _KEYED_RUN
+            for n in range(first, min(first + _KEYED_RUN, _TABLED)):
+                if table[n] is None:
+                    table[n] = text + (_NEGATIVE[n] if negative else _WHOLE[n])
+            piece = table[whole]
+            assert piece is not None
         return piece
+
+
+_KEYED_RUN: Final = 50
+"""The whole parts whose ``_KeyedNumbers`` texts are made together."""
 
 
 _RECORD_KEYS: Final = _KeyTexts()
@@ -394,7 +412,6 @@ class _Tail:
 _LINE_HIGH: Final[list[str | None]] = [None] * _TABLED
 """A line number's thousands (from 1) -> the line's opening text with them (``'{"line": 12'`` for 12,345), made the
 first time met; ``_KindTexts.padded`` follows with the last three digits and the kind."""
-_PADDED: Final = [f"{n:03d}" for n in range(_TABLED)]
 _LINES_TABLED: Final = _TABLED * _TABLED
 
 
@@ -416,12 +433,7 @@ def _line_kind_parts(line: int, kind: _KindTexts, parts: list[str]) -> None:
             head = _KEYS_LINE + _WHOLE[high]
             _LINE_HIGH[high] = head
         parts.append(head)
-        low = line - high * _TABLED
-        text = kind.padded[low]
-        if text is None:
-            text = _PADDED[low] + kind.text
-            kind.padded[low] = text
-        parts.append(text)
+        parts.append(kind.padded[line - high * _TABLED])
     else:
         parts.append(_KEYS_LINE)
         parts.append(str(line))
@@ -528,8 +540,10 @@ def event_text(event: dict[Any, Any] | MoveRecord, fallback: Callable[[Any], str
     return "".join(parts)
 
 
-_CHUNK: Final = 256
-"""Lines joined and written at once by ``write_lines``."""
+_CHUNK: Final = 64
+"""Lines joined and written at once by ``write_lines``: few enough that the list of pieces (~1,200) and the text
+(~8 kB) stay in the cache with the tables they are made of (256 lines made a list of ~40 kB, grown by copies, and
+a text of ~33 kB, both written through the cache at every chunk); a write costs ~2k instructions a chunk."""
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
