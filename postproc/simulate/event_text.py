@@ -540,10 +540,8 @@ def event_text(event: dict[Any, Any] | MoveRecord, fallback: Callable[[Any], str
     return "".join(parts)
 
 
-_CHUNK: Final = 64
-"""Lines joined and written at once by ``write_lines``: few enough that the list of pieces (~1,200) and the text
-(~8 kB) stay in the cache with the tables they are made of (256 lines made a list of ~40 kB, grown by copies, and
-a text of ~33 kB, both written through the cache at every chunk); a write costs ~2k instructions a chunk."""
+_CHUNK: Final = 256
+"""Lines joined and written at once by ``write_lines``."""
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
