@@ -10,7 +10,7 @@ writes it.
 
 from __future__ import annotations
 
-from typing import Final
+from typing import Final, cast
 
 from mypy_extensions import i64, mypyc_attr
 
@@ -225,8 +225,12 @@ class StraightLane(Lane):
         """The block's text, or None."""
         writer = self.writer
         sections = block.sections
+        found = cast("dict[str, object]", sections)
+        """The sections as objects: compiled, a look-up typed ``Section`` checked its answer against the base class,
+        a call of ``PyType_IsSubtype`` for each of the three (an ``isinstance`` of the section's own class below
+        is a compare of types)."""
         text = block.text
-        motion = sections.get("Motion")
+        motion = found.get("Motion")
         if motion is None:
             expansions = self.expansions
             if expansions is None:
@@ -270,9 +274,9 @@ class StraightLane(Lane):
         count = len(sections)
         sequence = feed = None
         if count > 1:
-            sequence = sections.get("Sequence")
+            sequence = found.get("Sequence")
             if sequence is None or count > 2:
-                feed = sections.get("Feed")
+                feed = found.get("Feed")
         besides = (sequence is not None) + (feed is not None)
         # The words are read where they stand in the line: a canonical block's text is its words joined by single
         # spaces (``Block.canonical``), so a block whose words the reader left unmade (``Block.marks``) is written

@@ -23,7 +23,7 @@ each one's point (``move_words.NotedPoint``), without calling the step. Both for
 
 from __future__ import annotations
 
-from typing import Callable, Final, Iterator, Sequence
+from typing import Callable, Final, Iterator, Sequence, cast
 
 from mypy_extensions import mypyc_attr
 
@@ -114,8 +114,8 @@ def plain_motion(sections: dict[str, Section]) -> Motion | None:
             return None
     elif size != 1:
         return None
-    motion = sections.get("Motion")
-    if not isinstance(motion, Motion):
+    motion = cast("dict[str, object]", sections).get("Motion")  # (an object: typed ``Section``, compiled, the
+    if not isinstance(motion, Motion):  # look-up's answer was checked against the base class, PyType_IsSubtype)
         return None
     mode = motion.mode
     return motion if mode != "home" and mode != "home2" else None
