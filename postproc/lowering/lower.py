@@ -23,7 +23,7 @@ each one's point (``move_words.NotedPoint``), without calling the step. Both for
 
 from __future__ import annotations
 
-from typing import Callable, Final, Iterator, Sequence, cast, final
+from typing import Callable, Final, Iterator, Sequence, cast
 
 from mypy_extensions import mypyc_attr
 
@@ -182,7 +182,8 @@ class Walk:
         """The steps a plain move goes to from the first step on (``moves``, not ``passes``), in order: a block that
         comes in as one and stays one goes down this list (one pass over a list, where stepping through
         ``next_move`` cost two indexed look-ups a step). Each in a ``Hop``: an item of a ``list[BlockStep]`` was
-        checked against ``BlockStep`` as it was read, a call of ``PyType_IsSubtype`` for every step a block."""
+        checked against ``BlockStep`` as it was read, a call of ``PyType_IsSubtype`` for every step a block (the
+        steps' classes extend it)."""
         self.route_at: list[int] = []
         """``route_at[k]``: the index in ``steps`` of ``route[k]``."""
         self.marked()
@@ -344,10 +345,11 @@ class Walk:
                 yield from self.onward(held, k + 1)
 
 
-@final
+@mypyc_attr(allow_interpreted_subclasses=True)
 class Hop:
-    """A step of ``Walk.route``: compiled, an object of a class no other extends is told by a compare of types,
-    and its ``step`` field is read unchecked."""
+    """A step of ``Walk.route``: compiled, an item of a ``list[Hop]`` is checked by a compare of types (a ``Hop``
+    is of this class itself, where a step is of a class that extends ``BlockStep``: ``PyType_IsSubtype``), and its
+    ``step`` field is read unchecked."""
 
     __slots__ = ("step",)
 
