@@ -229,7 +229,7 @@ class _Flags(BlockStep):
 
 
 def _marks(walk: lower.Walk) -> tuple[list[int], list[int], list[int], list[int]]:
-    return walk.next_move, walk.next_take, [id(step) for step in walk.route], walk.route_at
+    return walk.next_move, walk.next_take, [id(hop.step) for hop in walk.route], walk.route_at
 
 
 @settings(max_examples=300, deadline=None)

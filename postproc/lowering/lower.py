@@ -23,7 +23,7 @@ each one's point (``move_words.NotedPoint``), without calling the step. Both for
 
 from __future__ import annotations
 
-from typing import Callable, Final, Iterator, Sequence
+from typing import Callable, Final, Iterator, Sequence, cast
 
 from mypy_extensions import mypyc_attr
 
@@ -114,8 +114,8 @@ def plain_motion(sections: dict[str, Section]) -> Motion | None:
             return None
     elif size != 1:
         return None
-    motion = sections.get("Motion")
-    if not isinstance(motion, Motion):
+    motion = cast("dict[str, object]", sections).get("Motion")  # (an object: typed ``Section``, compiled, the
+    if not isinstance(motion, Motion):  # look-up's answer was checked against the base class, PyType_IsSubtype)
         return None
     mode = motion.mode
     return motion if mode != "home" and mode != "home2" else None
@@ -178,10 +178,12 @@ class Walk:
         self.next_take: list[int] = []
         """``next_take[i]``: the first step from ``i`` on whose work is not over (``passes`` False): the other
         blocks go from one such step to the next."""
-        self.route: list[BlockStep] = []
+        self.route: list[Hop] = []
         """The steps a plain move goes to from the first step on (``moves``, not ``passes``), in order: a block that
         comes in as one and stays one goes down this list (one pass over a list, where stepping through
-        ``next_move`` cost two indexed look-ups a step)."""
+        ``next_move`` cost two indexed look-ups a step). Each in a ``Hop``: an item of a ``list[BlockStep]`` was
+        checked against ``BlockStep`` as it was read, a call of ``PyType_IsSubtype`` for every step a block (the
+        steps' classes extend it)."""
         self.route_at: list[int] = []
         """``route_at[k]``: the index in ``steps`` of ``route[k]``."""
         self.marked()
@@ -191,7 +193,7 @@ class Walk:
         own calls only)."""
         steps = self.steps  # (one pass over the steps, lists appended: a hole cycle's start and its cancel each
         n = len(steps)  # mark anew, ~9k instructions compiled with a list and a comprehension per answer)
-        route: list[BlockStep] = []
+        route: list[Hop] = []
         route_at: list[int] = []
         open_at: list[int] = []
         for k in range(n):
@@ -199,7 +201,7 @@ class Walk:
             if not step.passes:
                 open_at.append(k)
                 if step.moves:
-                    route.append(step)
+                    route.append(Hop(step))
                     route_at.append(k)
         self.next_move = _firsts(route_at, n)
         self.next_take = _firsts(open_at, n)
@@ -221,7 +223,7 @@ class Walk:
         at = list(route_at)
         next_move = self.next_move
         if steps[k].moves:
-            route.insert(p, steps[k])
+            route.insert(p, Hop(steps[k]))
             at.insert(p, k)
             to = k
         else:
@@ -250,7 +252,8 @@ class Walk:
             at = self.route_at
             k = 0
             down = True  # (no step changed it)
-            for step in self.route:
+            for hop in self.route:
+                step = hop.step
                 k += 1
                 point = step.point
                 if point is not None:
@@ -340,6 +343,18 @@ class Walk:
             self.marked()
             for held in held_blocks:
                 yield from self.onward(held, k + 1)
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class Hop:
+    """A step of ``Walk.route``: compiled, an item of a ``list[Hop]`` is checked by a compare of types (a ``Hop``
+    is of this class itself, where a step is of a class that extends ``BlockStep``: ``PyType_IsSubtype``), and its
+    ``step`` field is read unchecked."""
+
+    __slots__ = ("step",)
+
+    def __init__(self, step: BlockStep) -> None:
+        self.step = step
 
 
 def _firsts(indices: list[int], n: int) -> list[int]:

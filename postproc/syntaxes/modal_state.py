@@ -54,8 +54,8 @@ class ModalStateSyntax(Syntax):
         spindle = state.spindle
         # no modal section and no construct (most blocks: a move and its block number, ``only_move``'s test
         # made with the look-up of the move; any other block one pass over its keys)
-        motion = sections.get("Motion")
-        size = len(sections)
+        motion = cast("dict[str, object]", sections).get("Motion")  # (an object: typed ``Section``, compiled, the
+        size = len(sections)  # look-up's answer was checked against the base class, PyType_IsSubtype a block)
         only = motion is not None and (size == 1 or size == 2 and "Sequence" in sections)
         quiet = only
         if not quiet:
