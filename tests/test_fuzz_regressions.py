@@ -586,3 +586,18 @@ def test_a_machine_move_under_incremental_distance_of_unknown_meaning_is_kept_by
     assert [str(e) for e in refused.value.errors] == [
         "t.nc:2:1: error: G53 in incremental distance mode (machine positions, increments or ignored: not known for "
         "this controller [?]) from mach3 has no equivalent in linuxcnc"]
+
+
+@pytest.mark.parametrize("word", ["T[1/0]", "T[2+1]"])
+def test_a_computed_lathe_t_word_is_refused_by_the_simulator_where_it_stands(word: str) -> None:
+    """``make fuzz`` (malformed GSK, 2026-12-01): a GSK lathe program's ``T[1/0]`` reached the simulator's turret
+    as an expression and ``toolpath`` and ``info`` ended in an internal error (TypeError), where a translation
+    refuses the word ("a computed lathe T word"). The simulator now refuses it too, at the T word."""
+    program = f"%\n{word}\nG0 X10. Z5.\n%\n"
+    with pytest.raises(ErrorList) as exc:
+        for _ in toolpath_events(io.StringIO(program), file="t.nc", dialect="gsk", setup=with_tools(),
+                                 diagnostics=Diagnostics(warn_stream=io.StringIO())):
+            pass
+    assert [str(e) for e in exc.value.errors] == [
+        "t.nc:2:1: error: a computed lathe T word cannot be simulated (the tool and offset it selects are known "
+        "when the program runs)"]

@@ -138,7 +138,10 @@ class Simulator(Moves):
                 if isinstance(s.number, int):
                     self.note_tool_data(line, TOOL_SELECTION, f"T{s.number}", float(s.number))
                 if self.lathe and self.ctx.lathe_turret and "ToolChange" not in sections:  # (an M6 lathe: only prepared)
-                    station = lathe_tool(s.number) if isinstance(s.number, int) else None
+                    if not isinstance(s.number, int):  # (T[1/0]: found by make fuzz, an internal error before)
+                        raise UnsupportedError("a computed lathe T word cannot be simulated (the tool and offset it "
+                                               "selects are known when the program runs)", self._at(block, "T"))
+                    station = lathe_tool(s.number)
                     if station is None or station != self.station:  # T0200 after T0202: the offset alone
                         emit({"line": line, "event": "tool", "number": lathe_tool(s.number)})
                     self.station = station
