@@ -276,7 +276,8 @@ class CompensatedMoves(Position):
         kept = all_as_written(target)  # (a CAM program's move: ``target`` is the point as written, no list made)
         values: list[Any] = target  # (its items as the objects they are: compiled, not a float unboxed and boxed)
         point: list[Any] = target if kept else []
-        crounded: list[float | int] = []
+        crounded: list[Any] = target[:] if kept else []  # (kept: the point as written, its offset axes set in the loop;
+        # a slice is one C call, where a new list grew at its first append: ~100 instructions a move, callgrind)
         moved = apart = False
         f: float | int | None = None
         mode: str | None = None
@@ -299,7 +300,10 @@ class CompensatedMoves(Position):
                     c = num(value + offset)
                 if not apart and c is not r and differs(c, r):
                     apart = True
-            crounded.append(c)
+            if not kept:
+                crounded.append(c)
+            elif c is not r:
+                crounded[i] = c
             if not moved:  # (identity first: an axis that stays keeps its number's object; never a nan)
                 b = before[i]
                 if c is not b and differs(c, b):

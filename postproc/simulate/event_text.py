@@ -17,8 +17,8 @@ number's whole part, its decimals from tables (one piece where they are at most 
 else the first three and the rest), the closing brace with the line end (no string is built per number, none
 per item; compiled, building a string costs ~500 instructions, an append ~50, and each piece ~90 more in the
 join and the list's clearing). A move record's fixed texts are fewer pieces still: its line number's last digits
-with its kind and their keys, its feed with its key (spelt once while the feed stays) and with the controlled
-point's key and first axis, its last short fraction with the two closing braces and the line end.
+with its kind and their keys, its feed with its key (spelt once while the feed stays), the controlled point's key
+with its first axis and whole part, its last short fraction with the two closing braces and the line end.
 """
 
 from __future__ import annotations
@@ -225,7 +225,10 @@ class _KeyTexts:
     """The texts of a record's axis keys (``MoveRecord.keys``: one tuple a simulation), kept for the tuple met last,
     and the texts of the kind and feed met last: each a fixed key joined with its value, and with the piece of the
     line next to it, one piece of the line where there were two (and ``str`` of the feed made once, not at every
-    move)."""
+    move). The feed's text stands alone: joined with the controlled point's first key and whole part (one piece
+    less a move) it made a table of whole parts for each feed, two thirds of the writer's texts (2,700 of 4,150 at
+    300k blocks), each met again after the others' feeds had pushed it out of the cache (perf: the look-up of a
+    keyed text, a fifth of a run's samples in ``_keyed_float_parts``, most of them there)."""
 
     def __init__(self) -> None:
         self.keys: tuple[str, ...] = ()
@@ -242,19 +245,12 @@ class _KeyTexts:
         self.f: object = None
         self.f_text = ""
         """``', "f": 1500'`` for the feed object ``f`` (a feed changes rarely: the simulator writes one object)."""
-        self.f_first = _KeyedNumbers("")
-        """``f_text`` joined with the controlled point's first key (``', "f": 1500, "controlled": {"x": '``) and the
-        whole parts after it, for the keys ``keys``."""
-        self.f_firsts: dict[str, _KeyedNumbers] = {}
-        """Each ``f_first`` made for ``keys``, by its text (a program's feeds are a few, met again and again)."""
 
     def update(self, keys: tuple[str, ...]) -> None:
         self.keys = keys
         self.later = [_KeyedNumbers(_key_text(key, True)) for key in keys]
         self.first = [_KeyedNumbers(_KEY_CONTROLLED + _key_text(key, False) if i == 0 else _key_text(key, True))
                       for i, key in enumerate(keys)]
-        self.f_firsts = {}
-        self.f = None  # (``f_first`` is made again for these keys)
 
     def kind_of(self, kind: str) -> _KindTexts:
         """The texts of ``kind``, kept as ``kind_texts``."""
@@ -268,16 +264,10 @@ class _KeyTexts:
         return texts
 
     def feed(self, f: float | int) -> None:
-        """Spell the feed ``f`` (``f_text``, ``f_first``), kept for the object ``f``."""
+        """Spell the feed ``f`` (``f_text``), kept for the object ``f``."""
         spelt: list[str] = [_KEY_F]
         _number_parts(f, spelt)
-        text = "".join(spelt)
-        self.f_text = text
-        first = self.f_firsts.get(text)
-        if first is None:
-            first = _KeyedNumbers(text + self.first[0].text if self.first else text)
-            self.f_firsts[text] = first
-        self.f_first = first
+        self.f_text = "".join(spelt)
         self.f = f
 
 
@@ -481,14 +471,10 @@ def _record_parts(record: MoveRecord, parts: list[str], line_end: bool) -> None:
     f = record.f
     mode = record.feed_mode
     controlled = record.controlled
-    joined = False  # the feed's text joined with the controlled point's first key (``_KeyTexts.f_first``)
     if f is not None:
         if f is not texts.f:  # (identity: the same object has the same text; an equal one is spelt again)
             texts.feed(f)
-        if mode is None and controlled is not None and len(keys) > 0:
-            joined = True
-        else:
-            parts.append(texts.f_text)
+        parts.append(texts.f_text)
     if mode is not None:
         parts.append(_KEY_FEED_MODE)
         parts.append(_word_text(mode))
@@ -506,7 +492,7 @@ def _record_parts(record: MoveRecord, parts: list[str], line_end: bool) -> None:
     last = len(keys) - 1 if line_end and ccentre is None else -1  # the number the closing follows (-1: none)
     for i in range(len(keys)):
         value = controlled[i]
-        keyed = texts.f_first if joined and i == 0 else first[i]
+        keyed = first[i]
         if i == last:
             if isinstance(value, float):
                 _keyed_float_parts(value, keyed, parts, _CLOSING)
