@@ -236,7 +236,8 @@ class _KeyTexts:
         """Each key after another item (``', "x": '``), with the numbers after it."""
         self.first: list[_KeyedNumbers] = []
         """Each key as the controlled point's, the first with the ``controlled`` key and the object's brace before
-        it (``', "controlled": {"x": '``), the others as ``later``."""
+        it (``', "controlled": {"x": '``), the others ``later``'s own (the same texts: a table of whole parts a
+        key, not two; a controlled Z's whole parts, the length above the programmed Z's, share it)."""
         self.kind: str | None = None
         self.kind_texts = _KindTexts("")
         """The texts of the kind ``kind`` (``', "move": "feed"'``, with the line number before it)."""
@@ -249,8 +250,8 @@ class _KeyTexts:
     def update(self, keys: tuple[str, ...]) -> None:
         self.keys = keys
         self.later = [_KeyedNumbers(_key_text(key, True)) for key in keys]
-        self.first = [_KeyedNumbers(_KEY_CONTROLLED + _key_text(key, False) if i == 0 else _key_text(key, True))
-                      for i, key in enumerate(keys)]
+        self.first = [_KeyedNumbers(_KEY_CONTROLLED + _key_text(key, False)) if i == 0 else self.later[i]
+                      for i, key in enumerate(keys)]  # (after the first, a key's texts are ``later``'s: one table)
 
     def kind_of(self, kind: str) -> _KindTexts:
         """The texts of ``kind``, kept as ``kind_texts``."""
