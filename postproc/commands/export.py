@@ -2,10 +2,9 @@
 
 from __future__ import annotations
 
-import io
 import json
 import math
-from typing import Any, BinaryIO, Callable, Iterable, Mapping, TextIO
+from typing import Any, Callable, Iterable, Mapping, TextIO
 
 from ..errors import Diagnostics, Location, ProgramError, UsageError
 from ..setup.machine_setup import MachineSetup
@@ -21,8 +20,7 @@ def export_toolpath(lines: Iterable[str], out: Any, *, file: str, dialect: str |
                     setup: MachineSetup | None = None, fmt: str = "jsonl",
                     diagnostics: Diagnostics | None = None, on_unsupported: str = "error",
                     arguments: Mapping[str, float] | None = None) -> None:
-    """Write a program's toolpath to ``out``: JSON lines (a text stream, or a binary one written as UTF-8: the
-    command's, ``write_chunks``) or SVG (text streams), PNG (a binary stream).
+    """Write a program's toolpath to ``out``: JSON lines or SVG (text streams), PNG (a binary stream).
     ``on_unsupported="warn"``: a move beyond the set-up's travel is a warning. ``arguments``: a macro
     file's call arguments (``postproc.simulate.toolpath.toolpath_events``)."""
     setup = setup or MachineSetup()
@@ -73,44 +71,14 @@ def event_encoder() -> Callable[[Event], str]:
     return lambda ev: join(chunks(ev, 0))
 
 
-def write_jsonl(events: Iterable[Event | MoveRecord], out: TextIO | BinaryIO, file: str = "<toolpath>") -> None:
+def write_jsonl(events: Iterable[Event | MoveRecord], out: TextIO, file: str = "<toolpath>") -> None:
     """One JSON object a line; strict JSON (no ``NaN``/``Infinity``): a non-finite value is an error
     at the event's source line. The text is json's (``postproc.simulate.event_text``, which hands what it
-    does not write itself to json's encoder). ``out``: a text stream, or a binary one (``write_chunks``)."""
+    does not write itself to json's encoder)."""
     try:
-        write_lines(events, write_chunks(out), event_encoder())
+        write_lines(events, out.write, event_encoder())
     except EventValueError as err:
         ev = err.event
         bad = ", ".join(k for k, v in ev.items() if isinstance(v, float) and not math.isfinite(v))
         raise ProgramError(f"the toolpath has a value beyond the range of a float ({bad})",
                            Location(file, int(ev.get("line", 1)), 1)) from None
-
-
-def write_chunks(out: TextIO | BinaryIO) -> Callable[[str], object]:
-    """How ``write_lines`` writes its chunks of lines to ``out``: a text stream's ``write``; a binary stream gets
-    each chunk encoded (UTF-8, ``surrogateescape`` as ``postproc.output.outfile.ENCODING``: a toolpath's text is
-    ASCII), and a buffered file (the command's output, ``outfile.write_output(binary=True)``) has it written
-    whole to its raw file, after what its buffer holds.
-
-    A chunk (``event_text._CHUNK`` lines, ~38 kB) needs no buffering, and each layer copied it once more: a text
-    file encoded it into bytes, its buffer (``outfile.BUFFER``, 1 MB) copied those before the system call copied
-    them into the file. For a 300k-block toolpath that was 44 MB copied once more, through a buffer as large as
-    the processor's second-level cache: each 1 MB written there and read back by the system call pushed out
-    the writer's tables (``event_text``), which the next lines met again from farther away."""
-    stream: Any = out  # (typing's TextIO and BinaryIO are no io classes: tested as those)
-    if not isinstance(stream, (io.BufferedIOBase, io.RawIOBase)):
-        write: Callable[[str], object] = stream.write
-        return write
-    if not isinstance(stream, io.BufferedWriter) or not isinstance(stream.raw, io.FileIO):
-        return lambda text: stream.write(text.encode("utf-8", "surrogateescape"))
-    stream.flush()
-    raw = stream.raw
-
-    def write_raw(text: str) -> None:
-        data = memoryview(text.encode("utf-8", "surrogateescape"))
-        while data:
-            written = raw.write(data)  # a file may take less than it is given: the rest is written again
-            if written is None:
-                raise BlockingIOError("the output file took nothing (non-blocking)")
-            data = data[written:]
-    return write_raw

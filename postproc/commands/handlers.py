@@ -170,12 +170,11 @@ def _renumber(text: str | None) -> tuple[int, int | None] | None:
 def cmd_toolpath(args: argparse.Namespace) -> int:
     from .export import export_toolpath
     setup = _setup(args.machine, args.lib)
-    png = args.format == "png"
-    if png and not args.output:
+    binary = args.format == "png"
+    if binary and not args.output:
         raise UsageError("--format png needs -o OUT")
-    if png and args.output == "-":
+    if binary and args.output == "-":
         raise UsageError("--format png needs -o OUT, a file")
-    binary = png or args.format == "jsonl"  # JSON lines written as bytes (``export.write_chunks``)
     with _open_program(args.input) as src:
         lines, diagnostics = _watched(args.input, src, setup)
         write_output(_output(args.output), lambda out: export_toolpath(
