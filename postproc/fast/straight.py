@@ -334,9 +334,9 @@ class StraightLane(Lane):
             if not isinstance(sequence, Sequence):
                 return None
             end = _word_end(text, 0, size, marks)
-            label = _digits(text, 1, end)  # (the word's own digits: a look-up of ``values`` cost ~130 instructions)
-            if end < 0 or text[0] != "N" or label < 0 or label != sequence.number or end > 2 and text[1] == "0" \
-                    or self.max_number and label > self.max_number:
+            number = _digits(text, 1, end)  # (the word's own digits: a look-up of ``values`` cost ~130 instructions)
+            if end < 0 or text[0] != "N" or number < 0 or number != sequence.number or end > 2 and text[1] == "0" \
+                    or self.max_number and number > self.max_number:
                 return None  # (N010 is written N10; a number the target refuses is dropped by the general path)
             at = end + 1
             head = end
