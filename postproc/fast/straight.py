@@ -93,21 +93,6 @@ def _whole(text: str, start: i64, end: i64) -> bool:
     return True
 
 
-def _digits(text: str, start: i64, end: i64) -> i64:
-    """The number ``text[start:end]`` spells where it is digits only, at most 18 (an ``i64``'s), as ``f"N{number}"``
-    writes a block number with no leading zero; -1 for anything else (a sign, a point, no digit)."""
-    if start >= end or end - start > 18:
-        return -1
-    number: i64 = 0
-    while start < end:
-        digit = ord(text[start]) - 48
-        if digit < 0 or digit > 9:
-            return -1
-        number = number * 10 + digit
-        start += 1
-    return number
-
-
 def _spelt(text: str, start: i64, end: i64, canonical: bool) -> bool:
     """Whether a word's number (``text[start:end]``) is in the writer's spelling where its block is not canonical
     (``canonical``: the reader said every word is): explicit point, leading zero, no trailing zero."""
@@ -334,9 +319,10 @@ class StraightLane(Lane):
             if not isinstance(sequence, Sequence):
                 return None
             end = _word_end(text, 0, size, marks)
-            number = _digits(text, 1, end)  # (the word's own digits: a look-up of ``values`` cost ~130 instructions)
-            if end < 0 or text[0] != "N" or number < 0 or number != sequence.number or end > 2 and text[1] == "0" \
-                    or self.max_number and number > self.max_number:
+            read_number = values.get("N")  # (an int: compiled, compared unboxed)
+            if end < 0 or text[0] != "N" or type(read_number) is not int or read_number != sequence.number \
+                    or end > 2 and text[1] == "0" or self.max_number and read_number > self.max_number \
+                    or not canonical and (text[1] == "-" or not _whole(text, 1, end)):
                 return None  # (N010 is written N10; a number the target refuses is dropped by the general path)
             at = end + 1
             head = end
