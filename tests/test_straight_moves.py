@@ -318,9 +318,9 @@ def test_the_copy_puts_its_straight_lines(monkeypatch: pytest.MonkeyPatch) -> No
                 assert lane is not None
                 return lane.write(block)
 
-            def put(self, block: Block, out: Batch) -> bool:
+            def put(self, block: Block, out: Batch, below: int) -> bool:
                 assert lane is not None
-                done = lane.put(block, out)
+                done = lane.put(block, out, below)
                 if done:
                     put.append(block.text)
                 return done
@@ -350,3 +350,56 @@ def test_canonical_numbers_have_at_most_max_places() -> None:
     most, more = "X0." + "1" * MAX_PLACES, "X0." + "1" * (MAX_PLACES + 1)
     assert CANONICAL_BLOCK.fullmatch(most) and not CANONICAL_BLOCK.fullmatch(more)
     assert scan_words(most)[0] & CANONICAL and not scan_words(more)[0] & CANONICAL
+
+
+@pytest.mark.parametrize("target", ["grbl", "linuxcnc"])
+@pytest.mark.parametrize("below", [0, 14, 20, 24])
+def test_the_straight_lane_puts_the_lines_its_rule_passes(target: str, below: int,
+                                                          monkeypatch: pytest.MonkeyPatch) -> None:
+    """Under a line rule (grbl's buffer, LinuxCNC's length), ``StraightLane.put`` puts a move's line and its end of
+    line into the output where the text is shorter than the length the rule passes as it is (``passes_below``, made
+    shorter here: 14, 20 and 24 characters; 0 keeps the rule's own), and leaves a longer one to ``write`` and the
+    rule, having changed nothing (the feed rate is carried once: an ``F`` only on the blocks that say it). The
+    output is the general path's, and which lines were put is told by their lengths (hand-derived)."""
+    put: list[str] = []
+    install = postproc.fast.lane.install
+
+    def counting(writer: Writer) -> None:
+        install(writer)
+        lane = writer.lane
+        assert isinstance(lane, StraightLane) and lane.puts and lane.passes_below > 0
+        if below:
+            lane.passes_below = below
+
+        class Counted(Lane):
+            def __init__(self) -> None:
+                super().__init__()
+                self.puts = True
+                self.passes_below = lane.passes_below if isinstance(lane, Lane) else 0
+
+            def write(self, block: Block) -> str | None:
+                assert lane is not None
+                text = lane.write(block)
+                self.plain = lane.plain
+                return text
+
+            def put(self, block: Block, out: Batch, limit: int) -> bool:
+                assert lane is not None and limit == self.passes_below
+                done = lane.put(block, out, limit)
+                if done:
+                    put.append(str(block.text))
+                return done
+        writer.lane = Counted()
+
+    monkeypatch.setattr(postproc.fast.lane, "install", counting)
+    program = ["G21 G90 G17", "G0 X0. Y0.", "N10 G1 Z-1. F300.", "N20 X10.5 Y2.25", "N30 X-3.125 Y0.5 F1200.",
+               "X1. Y7.", "N40 Y8.5 Z-1.5", "G0 X5."]
+    fast = _run(program, target)
+    with monkeypatch.context() as patch:
+        patch.setattr(postproc.fast.lane, "install", _no_lane)
+        assert fast == _run(program, target)
+    # the lines written, G0 or G1 and the end of line included: 11, 18, 19, 27, 11, 18 and 7 characters
+    moves = program[1:]
+    written = [11, 18, 19, 27, 11, 18, 7]
+    expected = [line for line, n in zip(moves, written) if not below or n < below]
+    assert put == expected and (below or put == moves)

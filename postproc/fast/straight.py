@@ -16,6 +16,7 @@ from mypy_extensions import i64, mypyc_attr
 
 from ..ir.expr import Expr
 from ..ir import Block, Feed, Motion, Section, Sequence
+from ..ir.block import MARK_BITS, MARK_MASK
 from ..numbers import MAX_PLACES, SHORT_RANGE, as_written, canonical_number
 from ..output.line_feeds import Batch
 from ..output.writer_base import Lane
@@ -53,11 +54,24 @@ def _copied(text: str, start: i64, end: i64, value: object, read: object, most: 
                                                                                             most))
 
 
-def _word_end(text: str, at: i64, size: i64) -> i64:
+def _word_end(text: str, at: i64, size: i64, marks: i64) -> i64:
     """Where the word of a canonical line that starts at ``at`` ends: the next space, or the line's end; -1 where
-    no word starts there (the line has ended). (A loop: compiled, ``str.find`` cost ~200 instructions a word.)"""
+    no word starts there (the line has ended). ``marks``: where the line's letters stand (``Block.marks``; 0: not
+    known), so the word ends a character before the next letter (its words are joined by single spaces), read
+    with no character of the line looked at: the loop over them cost ~125 instructions a word compiled (~630 a
+    CAM block, callgrind), where ``str.find`` cost ~200."""
     if at >= size:
         return -1
+    if marks:
+        count = marks & MARK_MASK
+        rest = marks >> MARK_BITS
+        while count > 0:
+            place = rest & MARK_MASK
+            if place > at:
+                return place - 1
+            rest = rest >> MARK_BITS
+            count -= 1
+        return size
     end = at + 1
     while end < size and ord(text[end]) != 32:
         end += 1
@@ -153,11 +167,12 @@ class SourceLane(Lane):
         text = self.copied(block)
         return None if text is None else text + block.eol
 
-    def put(self, block: Block, out: Batch) -> bool:
+    def put(self, block: Block, out: Batch, below: int) -> bool:
         """``write``'s answer as its two pieces, the source line and its end of line (``Batch.write_line``); a
-        blank line is left to the writer (False), which checks it."""
+        blank line is left to the writer (False), which checks it, as is a text ``below`` or longer (where not 0)."""
         text = block.text
-        if text is None or not text or text.isspace() or self.copied(block) is None:
+        if text is None or not text or text.isspace() or below and len(text) + len(block.eol) >= below \
+                or self.copied(block) is None:
             return False
         out.write_line(text, block.eol)
         return True
@@ -217,12 +232,24 @@ class StraightLane(Lane):
         """As ``CopyLane.per_rev_checked``."""
         self.max_number = writer.MAX_BLOCK_NUMBER
         """A block number above it (when not 0) is the general path's to drop (``sequence_words``)."""
+        self.puts = True
         self.expansions: Lane | None = None
         """The lane of a block whose motion is an expansion (``postproc.fast.expansion_moves.ExpansionBlocks``,
         installed with the expansion-move lane where it applies): a block of no ``Motion`` is offered to it."""
 
     def write(self, block: Block) -> str | None:
         """The block's text, or None."""
+        return self._written(block, None, 0)
+
+    def put(self, block: Block, out: Batch, below: int) -> bool:
+        """``write``'s answer for a move as its two pieces, its line and its end of line (``Batch.write_line``: no
+        string joined for the block, ~270 instructions compiled); a text ``below`` or longer (where not 0) is left
+        to ``write`` (the line rule looks at it), as is a block of no ``Motion`` (an expansion's)."""
+        return self._written(block, out, below) is not None
+
+    def _written(self, block: Block, out: Batch | None, below: int) -> str | None:
+        """``write``'s text (``out`` None), or the line without its end put into ``out`` where the text is shorter
+        than ``below`` (0: any length); None: nothing written, nothing changed."""
         writer = self.writer
         sections = block.sections
         found = cast("dict[str, object]", sections)
@@ -233,7 +260,7 @@ class StraightLane(Lane):
         motion = found.get("Motion")
         if motion is None:
             expansions = self.expansions
-            if expansions is None:
+            if expansions is None or out is not None:
                 return None
             self.plain = False  # (its lines go to the line rule: ``Lane.plain``)
             return expansions.write(block)
@@ -284,11 +311,14 @@ class StraightLane(Lane):
         size: i64 = len(text)
         at: i64 = 0
         head: i64 = 0
+        marks: i64 = 0  # where the words' letters stand in a canonical line whose words the reader left unmade, its
+        if canonical and block.spelled() is text:  # text unchanged since (``Block.marks``): each word's end is read
+            marks = block.marks  # from them (``_word_end``)
         values = block.values  # what the words read as (a reader's, untouched since: ``Block.values``)
         if sequence is not None:
             if not isinstance(sequence, Sequence):
                 return None
-            end = _word_end(text, 0, size)
+            end = _word_end(text, 0, size, marks)
             read_number = values.get("N")  # (an int: compiled, compared unboxed)
             if end < 0 or text[0] != "N" or type(read_number) is not int or read_number != sequence.number \
                     or end > 2 and text[1] == "0" or self.max_number and read_number > self.max_number \
@@ -301,7 +331,7 @@ class StraightLane(Lane):
             return None
         written: i64 = 0
         if coded:
-            end = _word_end(text, at, size)
+            end = _word_end(text, at, size, marks)
             written = end - at
             at = end + 1
         most = writer.exact_mm if writer.modal.units == "mm" else writer.exact_inch
@@ -311,7 +341,7 @@ class StraightLane(Lane):
         pieces: list[str] | None = None  # (a block that is not canonical: the line rebuilt, its whole numbers spelt)
         copied: i64 = 0  # where the text not yet in ``pieces`` starts
         for axis, value in axes.items():
-            end = _word_end(text, at, size)
+            end = _word_end(text, at, size, marks)
             if end < 0:
                 return None
             letter = text[at]
@@ -340,7 +370,7 @@ class StraightLane(Lane):
         if arc:
             if center is not None:
                 for axis, value in center.items():
-                    end = _word_end(text, at, size)
+                    end = _word_end(text, at, size, marks)
                     if end < 0:
                         return None
                     letter = text[at]
@@ -350,7 +380,7 @@ class StraightLane(Lane):
                         return None
                     at = end + 1
             else:
-                end = _word_end(text, at, size)
+                end = _word_end(text, at, size, marks)
                 if end < 0:
                     return None
                 letter = text[at]
@@ -362,7 +392,7 @@ class StraightLane(Lane):
         if feed is not None:
             if not isinstance(feed, Feed):
                 return None
-            end = _word_end(text, at, size)
+            end = _word_end(text, at, size, marks)
             fed = feed.value
             if end < 0 or text[at] != "F" or type(fed) is not float or not _spelt(text, at + 1, end, canonical):
                 return None
@@ -378,14 +408,28 @@ class StraightLane(Lane):
         if pieces is not None:  # (the block number and motion code stand before the first number: ``head`` holds)
             pieces.append(text[copied:])
             text = "".join(pieces)
+        eol = block.eol or "\n"
+        start = head + 1 if head else 0
+        if out is None:  # (the end of line in the one string made)
+            if coded:
+                line = f"{text[:start]}{code}{text[start + written:]}{eol}"
+            elif head:  # the first space of a canonical block is the one after its block number
+                line = text.replace(" ", spaced, 1) + eol  # (one copy: two slices and a join cost ~450 more)
+            else:
+                line = f"{code} {text}{eol}"
+        else:
+            if coded:
+                line = f"{text[:start]}{code}{text[start + written:]}"
+            elif head:
+                line = text.replace(" ", spaced, 1)
+            else:
+                line = f"{code} {text}"
+            if below and len(line) + len(eol) >= below:
+                return None
         if feed is not None:
             writer.modal.feed = rate
         if writer.after_blocks:
             writer.after_block(block)  # as ``generate`` (after the block's words: none fails from here)
-        eol = block.eol or "\n"
-        if coded:
-            start = head + 1 if head else 0
-            return f"{text[:start]}{code}{text[start + written:]}{eol}"
-        if head:  # the first space of a canonical block is the one after its block number
-            return text.replace(" ", spaced, 1) + eol  # (one copy: two slices and a join cost ~450 more)
-        return f"{code} {text}{eol}"
+        if out is not None:
+            out.write_line(line, eol)
+        return line

@@ -79,4 +79,13 @@ class LineFeeds(Batch):
         return super().write(_LONE_CR.sub("\n", text) if "\r" in text else text)
 
     def write_line(self, text: str, eol: str) -> None:
-        self.write(text + eol)  # (a lone CR may be the text's end and the end of line its LF: as one text)
+        """``write(text + eol)``: as two pieces where the text holds no CR and the end of line is LF or CR LF (no lone
+        CR to rewrite: a straight lane's line, ``Batch.write_line``, no string joined); else as one text (a lone CR
+        may be the text's end and the end of line its LF)."""
+        if (eol == "\n" or eol == "\r\n") and "\r" not in text:
+            self.wrote = True
+            if not self.content and text.strip():
+                self.content = True
+            super().write_line(text, eol)
+        else:
+            self.write(text + eol)

@@ -82,11 +82,12 @@ class Lane:
     def write(self, block: Block) -> str | None:
         raise NotImplementedError
 
-    def put(self, block: Block, out: Batch) -> bool:
-        """Where the text ``write`` answers goes straight to the output (no source map, no line format, nothing set
-        aside) and is no blank line (which the writer checks): put it into ``out`` as ``write`` would answer it,
-        in pieces (``Batch.write_line``: no string joined for the one block); False: nothing put (the writer asks
-        ``write``, then its general path). Asked only of a lane whose ``puts`` is set."""
+    def put(self, block: Block, out: Batch, below: int) -> bool:
+        """Where the text ``write`` answers goes straight to the output (no source map, nothing set aside; no line
+        format, or only a line rule it passes as it is when shorter than ``below``, ``passes_below``; 0: no rule) and
+        is no blank line (which the writer checks): put it into ``out`` as ``write`` would answer it, in pieces
+        (``Batch.write_line``: no string joined for the one block); False: nothing put (the writer asks ``write``,
+        then its general path). Asked only of a lane whose ``puts`` is set."""
         return False
 
 
@@ -169,8 +170,10 @@ class Writer(abc.ABC):
         footer: str | None = None
         started = False
         line = 0
-        direct = out if lane is not None and lane.puts and output_map is None and line_format is None else None
-        """Where the lane puts its blocks' texts itself (``Lane.put``)."""
+        direct = out if lane is not None and lane.puts and output_map is None \
+            and (line_format is None or passes_below > 0) else None
+        """Where the lane puts its blocks' texts itself (``Lane.put``): no line format, or only a rule that a text
+        shorter than ``passes_below`` passes as it is (``put`` is given that length)."""
         for block in blocks:
             line = block.line
             tape_mark = "TapeMark" in block.sections
@@ -192,7 +195,8 @@ class Writer(abc.ABC):
                     and _displaced(self, displacement, block, dropped):
                 continue  # (the common block, no axis displaced, nothing dropped, is not _displaced's: no call)
             try:
-                if direct is not None and self.set_aside is None and lane is not None and lane.put(block, direct):
+                if direct is not None and self.set_aside is None and lane is not None and lane.put(block, direct,
+                                                                                          passes_below):
                     if self.opening is None and block.sections and not _only_comments(block.sections):
                         self.opening = tape_mark
                     continue
