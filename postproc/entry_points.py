@@ -129,9 +129,15 @@ def _interpreter_id() -> str:
     return format(code, "08x")
 
 
-def _cache_dir() -> Path:
+def cache_folder() -> str:
+    """The user's cache folder for postproc (``$XDG_CACHE_HOME/postproc``, else ``~/.cache/postproc``): this module's
+    files, and the generated code's (``postproc.commands.generated_code``)."""
     base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
-    return Path(base) / "postproc"
+    return os.path.join(base, "postproc")
+
+
+def _cache_dir() -> Path:
+    return Path(cache_folder())
 
 
 def _read(path: Path) -> str | None:

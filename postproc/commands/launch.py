@@ -15,12 +15,15 @@ from __future__ import annotations
 import gc
 import sys
 
+from .generated_code import CodeCache, cache_path
+
 
 def run() -> None:
     """The console script and ``python -m postproc``: run the command line, exit with its status."""
     was_enabled = gc.isenabled()
     gc.disable()
     try:
+        cache = _generated_code()
         from .cli import main
         from . import command_line
         command_line.FREEZE_IMPORTS = True  # and what the command's own modules make (``command_line.handler``)
@@ -28,6 +31,21 @@ def run() -> None:
         gc.freeze()
         if was_enabled:
             gc.enable()
-    code = main()
+    try:
+        code = main()
+    finally:
+        cache.save()  # (also after argparse's own exit: --help, a usage error)
     gc.freeze()
     sys.exit(code)
+
+
+def _generated_code() -> CodeCache:
+    """The code ``dataclasses`` and ``collections.namedtuple`` generate, compiled once per installation
+    (``postproc.commands.generated_code``), given to them before the first dataclass or named tuple is made."""
+    import collections  # (already imported by the interpreter's start)
+    from ..entry_points import cache_folder
+    cache = CodeCache(cache_path(cache_folder()))
+    cache.install(collections)  # first: importing dataclasses makes named tuples (inspect, dis)
+    import dataclasses
+    cache.install(dataclasses)
+    return cache
