@@ -8,6 +8,7 @@ import collections
 import dataclasses
 import marshal
 import os
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -109,7 +110,8 @@ def test_exec_and_eval_keep_the_builtins_meaning(installed: CodeCache) -> None:
 
 
 @pytest.mark.parametrize("content", [b"", b"garbage", marshal.dumps([1, 2]), marshal.dumps({"exec\0x": 1}),
-                                     marshal.dumps({1: compile("1", "<string>", "eval")})])
+                                     marshal.dumps({1: compile("1", "<string>", "eval")}),
+                                     marshal.dumps({"re\0s0\0a": ("a", 0, [1, "x"], 0, {}, ())})])
 def test_a_file_that_is_not_a_cache_is_ignored(tmp_path: Path, content: bytes) -> None:
     path = cache_path(str(tmp_path))
     Path(path).write_bytes(content)
@@ -140,8 +142,54 @@ def test_the_command_writes_the_file_once_and_reads_it_after(tmp_path: Path) -> 
     (path,) = (tmp_path / "cache" / "postproc").glob("generated-code-*")
     texts = CodeCache(str(path)).codes
     assert any("__init__" in key for key in texts) and any(key.startswith("eval\0lambda _cls") for key in texts)
+    assert len(CodeCache(str(path)).patterns) > 10  # argparse's, gettext's, the lexers'...
     written = path.stat().st_mtime_ns
     done = subprocess.run(args, env=env, capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stderr
     assert path.stat().st_mtime_ns == written  # nothing new to compile: not written again
     assert (tmp_path / "one.gcode").read_text()
+
+
+ATOMS = st.sampled_from(["a", "b", r"\d", r"\w", r"\s", ".", "[a-c]", "[^x]", r"\(", "X", "é", "^", "$", r"\b"])
+
+
+def _regex(children: st.SearchStrategy[str]) -> st.SearchStrategy[str]:
+    return st.one_of(
+        st.tuples(children, children).map("".join),
+        st.tuples(children, children).map("|".join),
+        children.map(lambda r: f"(?:{r})"), children.map(lambda r: f"({r})"),
+        st.tuples(st.sampled_from(["x", "y", "name"]), children).map(lambda t: f"(?P<{t[0]}>{t[1]})"),
+        st.tuples(children, st.sampled_from(["*", "+", "?", "{2}", "{1,3}", "*?", "++", "*+"])).map(
+            lambda t: f"(?:{t[0]}){t[1]}"),
+        children.map(lambda r: f"(?={r})"), children.map(lambda r: f"(?i:{r})"))
+
+
+REGEXES = st.recursive(ATOMS, _regex, max_leaves=8)
+FLAGS = st.sampled_from([0, re.IGNORECASE, re.MULTILINE | re.DOTALL, re.VERBOSE, re.ASCII, re.IGNORECASE | re.ASCII])
+
+
+@settings(max_examples=60, deadline=None)
+@given(text=REGEXES, flags=FLAGS, as_bytes=st.booleans())
+def test_a_pattern_is_the_one_re_compiles(tmp_path_factory: pytest.TempPathFactory, text: str, flags: int,
+                                          as_bytes: bool) -> None:
+    """Equal as ``re`` compares patterns (flags and the matcher's code), compiled here or read from the file."""
+    import re._compiler as compiler
+    if as_bytes:
+        if flags & re.ASCII or not text.isascii():
+            return
+        source: str | bytes = text.encode()
+    else:
+        source = text
+    try:
+        plain = compiler.compile(source, flags)
+    except re.error:
+        return
+    cache = CodeCache(cache_path(str(tmp_path_factory.mktemp("cache"))))
+    first = cache.pattern_compiler(compiler.compile)(source, flags)
+    cache.save()
+    again = CodeCache(cache.path)
+    second = again.pattern_compiler(compiler.compile)(source, flags)
+    assert not again.added and len(again.patterns) == 1  # read from the file
+    assert plain == first == second
+    assert (plain.pattern, plain.flags, plain.groups, plain.groupindex) == \
+        (second.pattern, second.flags, second.groups, second.groupindex)

@@ -40,12 +40,14 @@ def run() -> None:
 
 
 def _generated_code() -> CodeCache:
-    """The code ``dataclasses`` and ``collections.namedtuple`` generate, compiled once per installation
-    (``postproc.commands.generated_code``), given to them before the first dataclass or named tuple is made."""
+    """The code ``dataclasses`` and ``collections.namedtuple`` generate and the patterns ``re`` compiles, compiled once
+    per installation (``postproc.commands.generated_code``), given to them before the first dataclass, named tuple or
+    pattern is made."""
     import collections  # (already imported by the interpreter's start)
     from ..entry_points import cache_folder
     cache = CodeCache(cache_path(cache_folder()))
     cache.install(collections)  # first: importing dataclasses makes named tuples (inspect, dis)
+    cache.install_patterns()
     import dataclasses
     cache.install(dataclasses)
     return cache
