@@ -16,8 +16,8 @@ written again when it ends if a text was new. A text gets what exactly that text
 built-in would compile it with (the name ``<string>``, no ``__future__`` feature: ``dataclasses`` and
 ``collections`` have none; for ``eval``, its leading blanks skipped; a pattern, its type and flags): the same code
 and the same patterns (equal, as ``re`` compares them: flags and matcher code). A file of another byte-code or
-matcher version (its name holds both), or one that does not read as texts with code objects and pattern
-arguments, is ignored; one that cannot be written only costs the next start its compiling. A program that calls
+matcher version (its name holds both, with the interpreter's version and optimisation level), or one that does not
+read as texts with code objects and pattern arguments, is ignored; one that cannot be written only costs the next start its compiling. A program that calls
 ``main`` keeps the standard ``exec``, ``eval`` and ``re``.
 """
 
@@ -158,8 +158,11 @@ class _Recording:
 
 
 def cache_path(folder: str) -> str:
-    """The cache file in ``folder`` for this interpreter's byte code and ``re``'s matcher."""
-    return os.path.join(folder, f"generated-code-{MAGIC_NUMBER.hex()}-{marshal.version}-{_constants.MAGIC}.bin")
+    """The cache file in ``folder`` for this interpreter (its version: a release may compile a text otherwise), its
+    byte code's and ``re``'s matcher's versions, and its optimisation level (``-O`` compiles asserts away)."""
+    version = f"{sys.implementation.cache_tag}-{sys.version.split()[0]}-o{sys.flags.optimize}"
+    formats = f"{MAGIC_NUMBER.hex()}-{marshal.version}-{_constants.MAGIC}"
+    return os.path.join(folder, f"generated-code-{version}-{formats}.bin")
 
 
 def _read(path: str) -> tuple[dict[str, CodeType], dict[str, PatternArguments]]:
