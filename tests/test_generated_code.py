@@ -54,8 +54,9 @@ FIELDS = st.lists(st.tuples(st.sampled_from(["int", "str", "float", "tuple[int, 
 def _define(shape: list[tuple[str, str]], frozen: bool, slots: bool, order: bool) -> type:
     lines = ["import dataclasses", f"@dataclasses.dataclass(frozen={frozen}, slots={slots}, order={order})",
              "class Made:"]
-    lines += [f"    f{i}: {kind}" + {"none": "", "value": " = 0", "factory": " = dataclasses.field(default_factory=list)"}[
-        default] for i, (kind, default) in enumerate(sorted(shape, key=lambda s: s[1] != "none"))]
+    defaults = {"none": "", "value": " = 0", "factory": " = dataclasses.field(default_factory=list)"}
+    lines += [f"    f{i}: {kind}" + defaults[default]
+              for i, (kind, default) in enumerate(sorted(shape, key=lambda s: s[1] != "none"))]
     lines += ["    pass"]
     space: dict[str, Any] = {"__name__": __name__}  # (a module dataclasses finds in sys.modules)
     exec(compile("\n".join(lines), "made", "exec"), space)

@@ -76,7 +76,8 @@ def test_what_it_cannot_tell_for_certain_is_left_to_python(tmp_path: Path) -> No
     root = _tree(tmp_path)
     finder = SourceFinder(str(root))
     path = [str(root / "postproc")]
-    assert finder.find_spec("postproc.plain", path).origin == str(root / "postproc" / "plain.py")  # type: ignore[union-attr]
+    plain = finder.find_spec("postproc.plain", path)
+    assert plain is not None and plain.origin == str(root / "postproc" / "plain.py")
     sub = finder.find_spec("postproc.sub", path)
     assert sub is not None and sub.submodule_search_locations == [str(root / "postproc" / "sub")]
     for name in ("postproc.built", "postproc.portion", "postproc.legacy", "postproc.missing"):

@@ -124,7 +124,8 @@ def test_a_toolpath_as_json_lines_loads_no_drawing(tmp_path: Path, one_line: Pat
 def test_a_backplot_loads_the_drawing(tmp_path: Path, one_line: Path) -> None:
     """The other side of the lazy import: ``--format svg`` does load the drawing (the probe is not blind)."""
     out = tmp_path / "one.svg"
-    modules = modules_after(tmp_path, "toolpath", str(one_line), "--dialect", "fanuc", "--format", "svg", "-o", str(out))
+    modules = modules_after(tmp_path, "toolpath", str(one_line), "--dialect", "fanuc", "--format", "svg",
+                            "-o", str(out))
     assert "postproc.drawing.backplot" in modules and out.read_text().lstrip().startswith("<")
 
 

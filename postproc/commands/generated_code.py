@@ -17,8 +17,8 @@ built-in would compile it with (the name ``<string>``, no ``__future__`` feature
 ``collections`` have none; for ``eval``, its leading blanks skipped; a pattern, its type and flags): the same code
 and the same patterns (equal, as ``re`` compares them: flags and matcher code). A file of another byte-code or
 matcher version (its name holds both, with the interpreter's version and optimisation level), or one that does not
-read as texts with code objects and pattern arguments, is ignored; one that cannot be written only costs the next start its compiling. A program that calls
-``main`` keeps the standard ``exec``, ``eval`` and ``re``.
+read as texts with code objects and pattern arguments, is ignored; one that cannot be written only costs the next
+start its compiling. A program that calls ``main`` keeps the standard ``exec``, ``eval`` and ``re``.
 """
 
 from __future__ import annotations
