@@ -8,6 +8,9 @@ they refer to, to free memory the system takes back anyway. So the imports run w
 the run left, is frozen (``gc.freeze``: moved where no collection looks). In between it runs as
 usual, each collection then walking only what the run itself allocates. Only the command's process
 does this: a program that calls ``main`` (the tests, a caller's worker) keeps its collector as it is.
+
+The same process has the code ``dataclasses`` and ``namedtuple`` generate and the patterns ``re`` compiles while
+the modules load compiled once per installation, not at every start (``postproc.commands.generated_code``).
 """
 
 from __future__ import annotations
