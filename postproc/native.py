@@ -28,6 +28,8 @@ from pathlib import Path
 from types import ModuleType
 from typing import Mapping, Sequence
 
+from .source_finder import SourceFinder
+
 _ROOT = os.path.dirname(os.path.dirname(os.path.realpath(__file__)))
 ROOT = Path(_ROOT)
 """The folder that holds ``postproc/`` and ``dialects/`` (site-packages, or the checkout when editable)."""
@@ -167,17 +169,19 @@ _REASON, _FILES = _plan(_ROOT, os.environ)
 
 
 def install() -> None:
-    """Put the compiled modules first on the import path. Called by postproc's entry points (``api``,
-    ``cli``, ``plugins``, ``batch``, ``testing``) before they import anything else; a process that
-    imported a hot module by itself first keeps pure Python (the group is used whole or not at all)."""
+    """Put the compiled modules first on the import path, and the finder of the pure modules
+    (``postproc.source_finder``) right after them. Called by postproc's entry points (``api``, ``cli``,
+    ``plugins``, ``batch``, ``testing``) before they import anything else; a process that imported a hot
+    module by itself first keeps pure Python (the group is used whole or not at all)."""
     global _REASON, _FILES
-    if not _FILES or any(isinstance(f, CompiledFinder) for f in sys.meta_path):
+    if any(isinstance(f, SourceFinder) for f in sys.meta_path):
         return
     early = sorted(name for name in _FILES if name in sys.modules)
     if early:
         _REASON, _FILES = f"{early[0]} was imported before postproc's entry points", {}
-        return
-    sys.meta_path.insert(0, CompiledFinder(_FILES))
+    sys.meta_path.insert(0, SourceFinder(_ROOT))
+    if _FILES:
+        sys.meta_path.insert(0, CompiledFinder(_FILES))
 
 
 def compiled_modules() -> list[str]:

@@ -29,7 +29,7 @@ pytestmark = pytest.mark.one_build(reason="a scan of the source files (ast): it 
 ROOT = Path(__file__).resolve().parents[1]
 
 LAYERS: tuple[tuple[str, tuple[str, ...], str], ...] = (
-    ("ground", ("records", "errors", "xmlio", "numbers", "cycle_words", "native", "version", "entry_points",
+    ("ground", ("records", "errors", "xmlio", "numbers", "cycle_words", "source_finder", "native", "version", "entry_points",
                 "collector"),
      "records, errors and XML, number text, the hole-cycle word record, build and entry-point facts, the "
      "collector's pause: the standard library only"),

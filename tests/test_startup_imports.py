@@ -35,8 +35,10 @@ NEVER_BY_DEFAULT = ("pydantic", "pydantic_core", "annotated_types", "jinja2", "d
                     "postproc.setup.validate", "postproc.setup.load", "postproc.output.templates", "postproc.commands.batch.command",
                     "postproc.commands.batch.local", "postproc.commands.batch.cluster", "postproc.simulate.toolpath", "postproc.simulate.verify",
                     "postproc.drawing.backplot", "postproc.drawing.canvas", "postproc.commands.export")
-NOT_AT_START = ("decimal", "threading", "tempfile", "shutil", "random", "bz2", "lzma", "json")
-"""Standard modules imported where they are used (a top-level import of one of them fails here)."""
+NOT_AT_START = ("decimal", "threading", "tempfile", "shutil", "random", "bz2", "lzma", "json", "signal", "zlib")
+"""Standard modules imported where they are used (a top-level import of one of them fails here); ``signal`` and
+``zlib`` are never: the command line sets its handlers through ``signal``'s C core (``postproc.commands.cli``),
+and the entry-point cache names its file without a CRC (``postproc.entry_points``)."""
 ONLY_FOR_XML = ("lxml",)
 OTHER_DIALECTS = ("dialects.fagor", "dialects.gsk", "dialects.isg", "postproc_grbl", "postproc_grblhal",
                   "postproc_linuxcnc", "postproc_mach3")
@@ -105,6 +107,26 @@ def test_a_program_number_loads_the_structure_check_but_not_decimal(tmp_path: Pa
     modules = modules_after(tmp_path, "translate", str(path), "--from", "fanuc", "--to", "linuxcnc")
     assert "postproc.interp.structure" in modules  # the check ran
     assert not loaded(modules, "decimal")
+
+
+DRAWING = ("postproc.drawing", "lxml", "tempfile", "shutil", "random", "bz2", "lzma")
+"""What drawing a backplot imports (``postproc.commands.export.write_backplot``): the default toolpath, JSON lines,
+draws none."""
+
+
+def test_a_toolpath_as_json_lines_loads_no_drawing(tmp_path: Path, one_line: Path) -> None:
+    out = tmp_path / "one.jsonl"
+    modules = warm_modules_after(tmp_path, "toolpath", str(one_line), "--dialect", "fanuc", "-o", str(out))
+    assert "postproc.simulate.toolpath" in modules and out.read_text()  # the probe saw the run
+    assert [name for name in DRAWING + NOT_AT_START if loaded(modules, name) and name != "json"] == []
+
+
+def test_a_backplot_loads_the_drawing(tmp_path: Path, one_line: Path) -> None:
+    """The other side of the lazy import: ``--format svg`` does load the drawing (the probe is not blind)."""
+    out = tmp_path / "one.svg"
+    modules = modules_after(tmp_path, "toolpath", str(one_line), "--dialect", "fanuc", "--format", "svg",
+                            "-o", str(out))
+    assert "postproc.drawing.backplot" in modules and out.read_text().lstrip().startswith("<")
 
 
 def test_a_plain_translation_loads_no_transform_lathe_or_target_reader(tmp_path: Path, one_line: Path) -> None:

@@ -8,6 +8,9 @@ they refer to, to free memory the system takes back anyway. So the imports run w
 the run left, is frozen (``gc.freeze``: moved where no collection looks). In between it runs as
 usual, each collection then walking only what the run itself allocates. Only the command's process
 does this: a program that calls ``main`` (the tests, a caller's worker) keeps its collector as it is.
+
+The same process has the code ``dataclasses`` and ``namedtuple`` generate and the patterns ``re`` compiles while
+the modules load compiled once per installation, not at every start (``postproc.commands.generated_code``).
 """
 
 from __future__ import annotations
@@ -15,12 +18,15 @@ from __future__ import annotations
 import gc
 import sys
 
+from .generated_code import CodeCache, cache_path
+
 
 def run() -> None:
     """The console script and ``python -m postproc``: run the command line, exit with its status."""
     was_enabled = gc.isenabled()
     gc.disable()
     try:
+        cache = _generated_code()
         from .cli import main
         from . import command_line
         command_line.FREEZE_IMPORTS = True  # and what the command's own modules make (``command_line.handler``)
@@ -28,6 +34,23 @@ def run() -> None:
         gc.freeze()
         if was_enabled:
             gc.enable()
-    code = main()
+    try:
+        code = main()
+    finally:
+        cache.save()  # (also after argparse's own exit: --help, a usage error)
     gc.freeze()
     sys.exit(code)
+
+
+def _generated_code() -> CodeCache:
+    """The code ``dataclasses`` and ``collections.namedtuple`` generate and the patterns ``re`` compiles, compiled once
+    per installation (``postproc.commands.generated_code``), given to them before the first dataclass, named tuple or
+    pattern is made."""
+    import collections  # (already imported by the interpreter's start)
+    from ..entry_points import cache_folder
+    cache = CodeCache(cache_path(cache_folder()))
+    cache.install(collections)  # first: importing dataclasses makes named tuples (inspect, dis)
+    cache.install_patterns()
+    import dataclasses
+    cache.install(dataclasses)
+    return cache
