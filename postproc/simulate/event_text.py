@@ -226,9 +226,10 @@ class _KeyTexts:
     and the texts of the kind and feed met last: each a fixed key joined with its value, and with the piece of the
     line next to it, one piece of the line where there were two (and ``str`` of the feed made once, not at every
     move). The feed's text stands alone: joined with the controlled point's first key and whole part (one piece
-    less a move) it made a table of whole parts for each feed, two thirds of the writer's texts (2,700 of 4,150 at
-    300k blocks), each met again after the others' feeds had pushed it out of the cache (perf: the look-up of a
-    keyed text, a fifth of a run's samples in ``_keyed_float_parts``, most of them there)."""
+    less a move) it made a table of whole parts for each feed, two thirds of the writer's keyed texts (2,700 of
+    4,150 at 300k blocks), each met again after the others' feeds had pushed it out of the cache (perf at 300k
+    blocks: the look-ups of tabled texts 5-6 % of the run, most at the keyed whole parts; 3 % with one table a key,
+    ``first`` sharing ``later``'s)."""
 
     def __init__(self) -> None:
         self.keys: tuple[str, ...] = ()
