@@ -117,10 +117,35 @@ def test_a_file_that_is_not_a_cache_is_ignored(tmp_path: Path, content: bytes) -
     path = cache_path(str(tmp_path))
     Path(path).write_bytes(content)
     cache = CodeCache(path)
-    assert cache.codes == {}
+    assert cache.stored == {}
     cache.compiled("1 + 1", "eval")
     cache.save()
-    assert CodeCache(path).codes.keys() == {"eval\0" + "1 + 1"}
+    assert CodeCache(path).stored.keys() == {"eval\0" + "1 + 1"}
+
+
+def test_an_entry_that_does_not_read_is_compiled_again(tmp_path: Path) -> None:
+    path = cache_path(str(tmp_path))
+    Path(path).write_bytes(marshal.dumps({"eval\0" + "1 + 1": b"garbage", "re\0s0\0a+": marshal.dumps((1, 2))}))
+    cache = CodeCache(path)
+    assert eval(cache.compiled("1 + 1", "eval")) == 2
+    import re._compiler as compiler
+    assert cache.pattern_compiler(compiler.compile)("a+", 0) == compiler.compile("a+", 0)
+    cache.save()
+    again = CodeCache(path)
+    assert eval(again.compiled("1 + 1", "eval")) == 2 and not again.added
+    assert again.pattern_compiler(compiler.compile)("a+", 0).match("aa") and not again.added
+
+
+def test_a_start_turns_back_only_what_it_meets(tmp_path: Path) -> None:
+    """The file's other texts stay marshalled: reading it makes no code object."""
+    cache = CodeCache(cache_path(str(tmp_path)))
+    for n in range(50):
+        cache.compiled(f"{n} + 1", "eval")
+    cache.save()
+    again = CodeCache(cache.path)
+    assert len(again.stored) == 50 and again.codes == {}
+    again.compiled("7 + 1", "eval")
+    assert list(again.codes) == ["eval\0" + "7 + 1"]
 
 
 def test_an_unwritable_folder_only_costs_the_compiling(tmp_path: Path) -> None:
@@ -141,9 +166,9 @@ def test_the_command_writes_the_file_once_and_reads_it_after(tmp_path: Path) -> 
     done = subprocess.run(args, env=env, capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stderr
     (path,) = (tmp_path / "cache" / "postproc").glob("generated-code-*")
-    texts = CodeCache(str(path)).codes
+    texts = CodeCache(str(path)).stored
     assert any("__init__" in key for key in texts) and any(key.startswith("eval\0lambda _cls") for key in texts)
-    assert len(CodeCache(str(path)).patterns) > 10  # argparse's, gettext's, the lexers'...
+    assert len([key for key in texts if key.startswith("re\0")]) > 10  # argparse's, gettext's, the lexers'...
     written = path.stat().st_mtime_ns
     done = subprocess.run(args, env=env, capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stderr

@@ -37,50 +37,77 @@ PatternArguments = tuple[Any, int, list[int], int, dict[str, int], tuple[Any, ..
 """What ``re`` hands the matcher's constructor for a pattern: the pattern, its flags, the matcher's code, the number of
 groups, the groups by name and the names by group."""
 
-MAX_TEXTS = 4000
-"""More texts than this in the file (many versions of the installation met) and only those this run used are
-written back."""
+MAX_TEXTS = 600
+"""More texts than this in the file (many commands, dialects, set-ups or versions of the installation met) and only
+those this run used are written back."""
 
 
 class CodeCache:
-    """Code objects by the text (and mode) they were compiled from, read from and written to ``path``."""
+    """Code objects and patterns' arguments by the text (and mode, or type and flags) they were compiled from, read
+    from and written to ``path``. The file holds each one marshalled apart, turned back into an object only when a
+    run meets its text: a start reads the file's texts, not the objects other commands compiled (a file of every
+    dataclass and pattern a test suite met, 390 KB, cost a one-line translation 11M instructions read whole)."""
 
     def __init__(self, path: str) -> None:
         self.path = path
-        self.codes, self.patterns = _read(path)
+        self.stored = _read(path)
+        """Each text's object as the file holds it (marshalled)."""
+        self.codes: dict[str, CodeType] = {}
+        self.patterns: dict[str, PatternArguments] = {}
         self.used: set[str] = set()
-        self.added = False
-        """Whether a text was compiled here (the file is then written again by ``save``)."""
+        self.new: dict[str, Any] = {}
+        """What was compiled here (the file is then written again by ``save``)."""
+
+    @property
+    def added(self) -> bool:
+        """Whether a text was compiled here."""
+        return bool(self.new)
 
     def compiled(self, text: str, mode: str) -> CodeType:
         """The code ``exec`` (mode ``exec``) or ``eval`` (mode ``eval``) would compile ``text`` to."""
         key = mode + "\0" + text
+        self.used.add(key)
         code = self.codes.get(key)
         if code is None:
-            code = self.codes[key] = compile(text, "<string>", mode, dont_inherit=True)
-            self.added = True
-        self.used.add(key)
+            stored = self._stored(key)
+            if isinstance(stored, CodeType):
+                code = stored
+            else:
+                code = self.new[key] = compile(text, "<string>", mode, dont_inherit=True)
+            self.codes[key] = code
         return code
+
+    def _stored(self, key: str) -> object:
+        """The object the file holds for ``key`` (None if none, or if it does not read)."""
+        raw = self.stored.get(key)
+        if raw is None:
+            return None
+        try:
+            return marshal.loads(raw)
+        except (EOFError, ValueError, TypeError):
+            return None
 
     def save(self) -> None:
         """Write the file again if a text was compiled, whole or not at all (a parallel start reads either)."""
-        if not self.added:
+        if not self.new:
             return
-        codes: dict[str, Any] = {**self.codes, **self.patterns}
-        if len(codes) > MAX_TEXTS:
-            codes = {k: v for k, v in codes.items() if k in self.used}
+        entries = dict(self.stored)
+        entries.update((key, marshal.dumps(value)) for key, value in self.new.items())
+        if len(entries) > MAX_TEXTS:
+            entries = {key: value for key, value in entries.items() if key in self.used}
         tmp = f"{self.path}.{os.getpid()}"
         try:
             os.makedirs(os.path.dirname(self.path), exist_ok=True)
             with open(tmp, "wb") as f:
-                f.write(marshal.dumps(codes))
+                f.write(marshal.dumps(entries))
             os.replace(tmp, self.path)
         except (OSError, ValueError):
             try:
                 os.unlink(tmp)
             except OSError:
                 pass
-        self.added = False
+        self.stored = entries
+        self.new = {}
 
     def install(self, *modules: ModuleType) -> None:
         """Give ``modules`` (``dataclasses``, ``collections``) this cache's ``exec`` and ``eval``: a module-level
@@ -105,6 +132,10 @@ class CodeCache:
             key = f"re\0{kind}{int(flags)}\0{p if kind == 's' else p.decode('latin-1')}"
             self.used.add(key)
             known = self.patterns.get(key)
+            if known is None:
+                stored = self._stored(key)
+                if _pattern_arguments(stored):
+                    known = self.patterns[key] = stored  # type: ignore[assignment]
             if known is not None:
                 return matcher.compile(*known)  # type: ignore[no-any-return]
             made: list[PatternArguments] = []
@@ -114,8 +145,7 @@ class CodeCache:
             finally:
                 _compiler._sre = matcher
             if len(made) == 1 and made[0][0] is p:  # (another thread compiling meanwhile: not kept)
-                self.patterns[key] = made[0]
-                self.added = True
+                self.patterns[key] = self.new[key] = made[0]
             return pattern
 
         return compile
@@ -165,25 +195,17 @@ def cache_path(folder: str) -> str:
     return os.path.join(folder, f"generated-code-{version}-{formats}.bin")
 
 
-def _read(path: str) -> tuple[dict[str, CodeType], dict[str, PatternArguments]]:
-    """The code objects and the patterns' arguments the file at ``path`` holds (none if it holds anything else)."""
+def _read(path: str) -> dict[str, bytes]:
+    """Each text's marshalled object as the file at ``path`` holds it (none if it holds anything else)."""
     try:
         with open(path, "rb") as f:
             table = marshal.loads(f.read())
     except (OSError, EOFError, ValueError, TypeError):
-        return {}, {}
-    codes: dict[str, CodeType] = {}
-    patterns: dict[str, PatternArguments] = {}
-    if not isinstance(table, dict):
-        return {}, {}
-    for key, value in table.items():
-        if isinstance(key, str) and key.startswith(("exec\0", "eval\0")) and isinstance(value, CodeType):
-            codes[key] = value
-        elif isinstance(key, str) and key.startswith("re\0") and _pattern_arguments(value):
-            patterns[key] = value
-        else:
-            return {}, {}
-    return codes, patterns
+        return {}
+    if not isinstance(table, dict) or not all(isinstance(key, str) and key.startswith(("exec\0", "eval\0", "re\0"))
+                                              and isinstance(value, bytes) for key, value in table.items()):
+        return {}
+    return table
 
 
 def _pattern_arguments(value: object) -> bool:
