@@ -176,6 +176,18 @@ def test_the_command_writes_the_file_once_and_reads_it_after(tmp_path: Path) -> 
     assert (tmp_path / "one.gcode").read_text()
 
 
+def test_the_command_writes_no_file_when_the_cache_is_turned_off(tmp_path: Path) -> None:
+    program = tmp_path / "one.nc"
+    program.write_text("G0 X1. Y2.\n")
+    env = dict(os.environ, XDG_CACHE_HOME=str(tmp_path / "cache"), POSTPROC_NO_CODE_CACHE="1")
+    args = [sys.executable, "-m", "postproc", "translate", str(program), "--from", "fanuc", "--to", "grbl",
+            "-o", str(tmp_path / "one.gcode")]
+    done = subprocess.run(args, env=env, capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert not list((tmp_path / "cache").glob("postproc/generated-code-*"))
+    assert (tmp_path / "one.gcode").read_text()
+
+
 ATOMS = st.sampled_from(["a", "b", r"\d", r"\w", r"\s", ".", "[a-c]", "[^x]", r"\(", "X", "é", "^", "$", r"\b"])
 
 

@@ -10,12 +10,14 @@ usual, each collection then walking only what the run itself allocates. Only the
 does this: a program that calls ``main`` (the tests, a caller's worker) keeps its collector as it is.
 
 The same process has the code ``dataclasses`` and ``namedtuple`` generate and the patterns ``re`` compiles while
-the modules load compiled once per installation, not at every start (``postproc.commands.generated_code``).
+the modules load compiled once per installation, not at every start (``postproc.commands.generated_code``), unless
+``POSTPROC_NO_CODE_CACHE=1`` (a read-only home, or to rule the cache out while chasing a fault).
 """
 
 from __future__ import annotations
 
 import gc
+import os
 import sys
 
 from .generated_code import CodeCache, cache_path
@@ -37,15 +39,18 @@ def run() -> None:
     try:
         code = main()
     finally:
-        cache.save()  # (also after argparse's own exit: --help, a usage error)
+        if cache is not None:
+            cache.save()  # (also after argparse's own exit: --help, a usage error)
     gc.freeze()
     sys.exit(code)
 
 
-def _generated_code() -> CodeCache:
+def _generated_code() -> CodeCache | None:
     """The code ``dataclasses`` and ``collections.namedtuple`` generate and the patterns ``re`` compiles, compiled once
     per installation (``postproc.commands.generated_code``), given to them before the first dataclass, named tuple or
-    pattern is made."""
+    pattern is made; None when ``POSTPROC_NO_CODE_CACHE=1``."""
+    if os.environ.get("POSTPROC_NO_CODE_CACHE") == "1":
+        return None
     import collections  # (already imported by the interpreter's start)
     from ..entry_points import cache_folder
     cache = CodeCache(cache_path(cache_folder()))
