@@ -46,7 +46,10 @@ def test_the_pattern_is_linuxcnc_s() -> None:
     for text in (" MSG, x", "msg,x", "\tDEBUG, #1", "print,done", "LOGOPEN,f.txt", "logclose", "PROBEOPEN f",
                  "ABORT, stop", "py,x=1", "LOG,x"):
         assert rule.acts(text), text
-    for text in ("msgs are inert", "drill from line 5: G81 X1", "MSG_1", "LOGX", "PYTHON", "- MSG, x", ""):
+    # look-alikes of ASCII letters, and a word run on into another letter, are inert [V: linuxcnc-uspace 2.9's
+    # rs274 run here on "(PR\u0131NT,lookalike)", "(MSG\u00e9,e)", "(DEBUGx,y)": COMMENT, where "(msg,ok)" gave MESSAGE]
+    for text in ("msgs are inert", "drill from line 5: G81 X1", "MSG_1", "LOGX", "PYTHON", "- MSG, x", "",
+                 "PR\u0131NT,lookalike", "M\u017fG,x", "MSG\u00e9,e", "DEBUGx,y", "\u0130\u212a"):
         assert not rule.acts(text), text
     assert rule.comment(" MSG, a (b)") == "(- MSG, a [b])" and rule.comment("drill") == "(drill)"
     assert CommentRule(False, (), None).comment("a\tb") == ";a b"

@@ -18,6 +18,11 @@ _BREAKS: Final = dict.fromkeys((*range(0x20), 0x7F, 0x85, 0x2028, 0x2029), " ")
 and a block. A table, not a regular expression compiled at every start (~0.5M instructions)."""
 
 
+def _any_case(word: str) -> str:
+    """A pattern matching ``word`` (ASCII letters and digits) with each letter in either case, and only so."""
+    return "".join(f"[{c.upper()}{c.lower()}]" if c.isalpha() else c for c in word)
+
+
 @mypyc_attr(allow_interpreted_subclasses=True)
 class CommentRule:
     """The working of one ``CommentSyntax``: its ``parens``, its ``clean`` and its active ``words``."""
@@ -29,9 +34,11 @@ class CommentRule:
         self.parens = parens
         self.clean = clean
         self.active: re.Pattern[str] | None = (
-            re.compile(r"[ \t]*(" + "|".join(words) + r")\b", re.IGNORECASE) if words else None)
-        """A comment whose text matches acts: after blanks and tabs, one of ``words``, in any case, as a whole
-        word; ``group(1)`` is the word as written."""
+            re.compile(r"[ \t]*(" + "|".join(_any_case(word) for word in words) + r")\b") if words else None)
+        """A comment whose text matches acts: after blanks and tabs, one of ``words``, its letters in either ASCII
+        case, as a whole word; ``group(1)`` is the word as written. Not ``re.IGNORECASE``, which also takes the
+        dotless i, the long s, the Kelvin sign and the dotted capital I for ASCII letters: rs274 keeps
+        ``(PRıNT,x)`` and ``(Mſg,x)`` inert [V: linuxcnc-uspace 2.9's rs274 run here: COMMENT, not MESSAGE]."""
         starts = {case for word in words for case in (word[0].lower(), word[0].upper())} | {" ", "\t"}
         self.quiet: frozenset[str] = frozenset(chr(c) for c in range(128) if chr(c) not in starts)
         """ASCII characters no active comment's text starts with (not a blank, a tab or a word's first letter in
@@ -53,7 +60,7 @@ class CommentRule:
         if active is None or not text:
             return None
         # A cheap test first (the regular expression costs ~2.5k a comment, on every comment written): the
-        # pattern, after its blanks, reads a word, in any case; an ASCII character matches a letter of it only
+        # pattern, after its blanks, reads a word, in either ASCII case; an ASCII character matches a letter of it only
         # as that letter, in either case (``quiet``, ``seconds``), so a text whose first character, or first
         # two, are ASCII and start no word never matches. Any other text is matched.
         first = text[0]
