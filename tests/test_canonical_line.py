@@ -28,8 +28,9 @@ _line = st.builds(
     lambda lead, words, seps, tail: lead + "".join(w + s for w, s in zip(words, seps)) + tail,
     st.sampled_from(["", "", "", " ", "\t"]),
     st.lists(_word, min_size=0, max_size=6),
-    st.lists(st.sampled_from([" ", " ", " ", "  ", "", "\t", "é", ";"]), min_size=6, max_size=6),
-    st.sampled_from(["", "", " ", ";", "; ", ";;", "0", "\u0661"]),
+    st.lists(st.sampled_from([" ", " ", " ", "  ", "", "\t", "é", ";", "\uff11", "\U0001d7cf", "\u00a0"]),
+             min_size=6, max_size=6),
+    st.sampled_from(["", "", " ", ";", "; ", ";;", "0", "\u0661", "\U0001d7cf"]),
 )
 
 
