@@ -74,12 +74,12 @@ def scan_marks(text: str) -> tuple[int, list[tuple[str, str]], int, i64]:
 def _scan(text: str, keep: bool) -> tuple[int, list[tuple[str, str]], int, i64]:
     """The scan (``scan_words``); ``keep`` False: the words' letters' places packed (the fourth answer, or 0
     where they do not fit or the line is not canonical) instead of the words made."""
-    # The line's characters read where they stand (compiled: ``ord(text[i])`` reads the code in place, no
-    # object; an ASCII copy of the line was ~240 instructions a line, callgrind): a character outside ASCII is
-    # told where the scan meets it, as no letter, and the line is then no line of words.
+    # The line's characters read where they stand, each once, into ``ch`` (-1 past the end), as ``i`` moves on
+    # (compiled: ``ord(text[i])`` reads the code in place, no object; an ASCII copy of the line was ~240
+    # instructions a line, and reading a character again at each test ~300 more, callgrind): a character outside
+    # ASCII is told where the scan meets it, as no letter, and the line is then no line of words.
     # Positions as i64 (compiled: machine integers, not tagged ones whose every step checks for overflow);
-    # each character read once into a local, digits and blanks told by comparisons (a table look-up is a
-    # second index, with its own checks).
+    # digits and blanks told by comparisons (a table look-up is a second index, with its own checks).
     b = text
     n: i64 = len(b)
     table = _CLASS
@@ -91,65 +91,77 @@ def _scan(text: str, keep: bool) -> tuple[int, list[tuple[str, str]], int, i64]:
     marks: i64 = 0  # their letters' places (``keep`` False), from bit MARK_BITS up
     sequence = -1
     i: i64 = 0
-    while i < n and (ord(b[i]) == 32 or ord(b[i]) == 9):  # ' ', '\t'
+    ch: i64 = ord(b[0]) if n else -1  # the character at i
+    while ch == 32 or ch == 9:  # ' ', '\t'
         i += 1
-    if i != 0 or i == n:  # blanks first, or no word at all
+        ch = ord(b[i]) if i < n else -1
+    if i != 0 or ch < 0:  # blanks first, or no word at all
         canonical = False
-    c = ord(b[i]) if i < n else 0  # the byte at i: a letter, or the end of block
-    while i < n:
+    while ch >= 0:  # at a word's letter, or what stands there
+        c = ch
         k = table[c] if c < 256 else 0  # (a code past the table's 256: no letter)
         if k < _AXIS:
             if c != 59:  # ';'
                 return 0, NO_WORDS, -1, 0
             i += 1
-            while i < n and (ord(b[i]) == 32 or ord(b[i]) == 9):
+            ch = ord(b[i]) if i < n else -1
+            while ch == 32 or ch == 9:
                 i += 1
-            if i != n:
+                ch = ord(b[i]) if i < n else -1
+            if ch >= 0:
                 return 0, NO_WORDS, -1, 0
             canonical = False  # ';': the end of block, written out
             break
         i += 1
-        if i < n and (ord(b[i]) == 32 or ord(b[i]) == 9):
+        ch = ord(b[i]) if i < n else -1
+        if ch == 32 or ch == 9:
             canonical = False  # 'X 1.': a blank between the letter and its number
-            while i < n and (ord(b[i]) == 32 or ord(b[i]) == 9):
+            while ch == 32 or ch == 9:
                 i += 1
+                ch = ord(b[i]) if i < n else -1
         start = i
-        sign = ord(b[i]) if i < n else 0
-        signed = sign == 45 or sign == 43  # '-', '+'
+        signed = ch == 45 or ch == 43  # '-', '+'
         if signed:
-            i += 1
-            if sign == 43 or k != _AXIS:  # '+1.', 'T-1': plain, not canonical
+            if ch == 43 or k != _AXIS:  # '+1.', 'T-1': plain, not canonical
                 canonical = False
+            i += 1
+            ch = ord(b[i]) if i < n else -1
         digits = i
+        lead = ch  # the number's first character
         first_n = (c == 78 or c == 110) and count == 0  # 'N', 'n' first: its number is the block's
         if first_n:
             number: i64 = 0  # (a machine integer: no checked multiplication a digit; summed up to 18 digits)
-            while i < n and 48 <= ord(b[i]) <= 57:
+            while 48 <= ch <= 57:
                 if i - digits < _I64_DIGITS:
-                    d: i64 = ord(b[i])
-                    number = number * 10 + (d - 48)
+                    number = number * 10 + (ch - 48)
                 i += 1
+                ch = ord(b[i]) if i < n else -1
             sequence = number
             if i - digits > _I64_DIGITS:
                 sequence = int(text[digits:i])
         else:
-            while i < n and 48 <= ord(b[i]) <= 57:
+            while 48 <= ch <= 57:
                 i += 1
+                ch = ord(b[i]) if i < n else -1
         whole = i - digits
-        point = i < n and ord(b[i]) == 46  # '.'
+        point = ch == 46  # '.'
         if point:
             i += 1
+            ch = ord(b[i]) if i < n else -1
             fraction = i
-            while i < n and 48 <= ord(b[i]) <= 57:
+            final: i64 = 0  # the last decimal place
+            while 48 <= ch <= 57:
+                final = ch
                 i += 1
+                ch = ord(b[i]) if i < n else -1
             places = i - fraction
             if whole == 0:
                 if places == 0:  # 'X.' is no number
                     return 0, NO_WORDS, -1, 0
                 canonical = False  # '.5'
-            elif (k != _AXIS or whole > 1 and ord(b[digits]) == 48 or places > _MAX_FRACTION
-                  or places > 0 and ord(b[i - 1]) == 48
-                  or signed and places == 0 and whole == 1 and ord(b[digits]) == 48):
+            elif (k != _AXIS or whole > 1 and lead == 48 or places > _MAX_FRACTION
+                  or places > 0 and final == 48
+                  or signed and places == 0 and whole == 1 and lead == 48):
                 canonical = False  # 'G1.5', '00.5', more than six places, '0.10', '-0.'
         else:
             if whole == 0:  # a letter without a number
@@ -169,28 +181,25 @@ def _scan(text: str, keep: bool) -> tuple[int, list[tuple[str, str]], int, i64]:
         elif count < MARK_WORDS:
             marks |= (start - 1) << (MARK_BITS * (count + 1))  # (a canonical word's letter stands just before)
         count += 1
-        if i == n:
-            break
-        c = ord(b[i])
-        if c == 32:  # a space, then (likeliest) the next word's letter
+        if ch == 32:  # a space, then (likeliest) the next word's letter
             i += 1
-            if i == n:
+            ch = ord(b[i]) if i < n else -1
+            if ch < 0:
                 canonical = False  # a blank at the end
                 break
-            c = ord(b[i])
-            if c < 256 and table[c] >= _AXIS:
+            if ch < 256 and table[ch] >= _AXIS:
                 continue
-        elif c == 59 or c < 256 and table[c] >= _AXIS:  # ';', or the next word at once ('X1Y2')
+        elif ch < 0:
+            break
+        elif ch == 59 or ch < 256 and table[ch] >= _AXIS:  # ';', or the next word at once ('X1Y2')
             canonical = False
             continue
-        elif c != 9:
+        elif ch != 9:
             return 0, NO_WORDS, -1, 0
         canonical = False  # canonical: one space between words, no tab
-        while i < n and (ord(b[i]) == 32 or ord(b[i]) == 9):
+        while ch == 32 or ch == 9:
             i += 1
-        if i == n:
-            break
-        c = ord(b[i])
+            ch = ord(b[i]) if i < n else -1
     if keep or not canonical or count > MARK_WORDS or n > MARK_MASK:
         return (kind | CANONICAL if canonical else kind), words, sequence, 0
     return kind | CANONICAL, words, sequence, marks | count
