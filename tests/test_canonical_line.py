@@ -155,3 +155,13 @@ def test_a_marked_block_is_the_block_of_its_words() -> None:
     for twin in (copy.copy(Block(1, line, "\n", None, marks)), pickle.loads(pickle.dumps(Block(1, line, "\n", None,
                                                                                             marks)))):
         assert twin.words == made.words
+
+
+@settings(max_examples=1000)
+@given(_line, _line, _line)
+def test_the_scan_of_a_line_read_from_its_pieces_bytes_is_the_scan_of_the_line(before: str, line: str, after: str) -> None:
+    # the Fanuc reader's scan reads a line's bytes where the line check's ASCII copy of its piece holds them
+    # (``scan_marks(text, data, at)``): the same answer as the line's own
+    if (before + line + after).isascii():
+        data = (before + "\n" + line + "\n" + after).encode("ascii")
+        assert scan_marks(line, data, len(before) + 1) == scan_marks(line)

@@ -355,11 +355,13 @@ def test_runs_are_the_checked_lines_split_from_their_ends(lines, end, odd, tail,
                 checked = postproc.syntaxes.lines.checked_lines(make(), ctx)
                 if runs:
                     split = []
-                    for texts, run_end in checked.runs():
+                    for texts, run_end, data in checked.runs():
                         if run_end is None:
+                            assert data == b""
                             split.extend(_split(line) for line in texts)
                         else:
                             assert isinstance(texts, list) and texts and (run_end or len(texts) == 1)
+                            assert data == b"" or data.startswith("".join(text + run_end for text in texts).encode())
                             split.extend((text, run_end) for text in texts)
                 else:
                     split = [_split(line) for line in checked]
@@ -377,10 +379,10 @@ def test_a_stream_whose_lines_end_alike_comes_in_runs_of_texts(end) -> None:
     ctx = Context("p.nc", MachineSetup(), Diagnostics(), "fanuc")
     program = f"G0 X1.{end}G1 X2.{end}M30"
     assert list(postproc.syntaxes.lines.checked_lines(io.StringIO(program, newline=""), ctx).runs()) == [
-        (["G0 X1.", "G1 X2."], end), (["M30"], "")]
+        (["G0 X1.", "G1 X2."], end, f"G0 X1.{end}G1 X2.{end}".encode("ascii")), (["M30"], "", b"")]
     mixed = "G0 X1.\r\nG1 X2.\nM30\n"
     assert list(postproc.syntaxes.lines.checked_lines(io.StringIO(mixed, newline=""), ctx).runs()) == [
-        (["G0 X1.\r\n", "G1 X2.\n", "M30\n"], None)]
+        (["G0 X1.\r\n", "G1 X2.\n", "M30\n"], None, b"")]
 
 
 @given(lines=_RUN_LINES, cam=st.lists(st.sampled_from(["N10 G1 X1. Y2.", "G0 X1", "N20 G2 X1. I0.5", "#1=2.",

@@ -30,15 +30,18 @@ class FanucReader(Reader):
         # (``postproc.syntaxes.lines.line_runs``): mostly many texts already split from the end they share.
         ctx = self.ctx
         number = 0
-        for texts, end in line_runs(lines):
+        for texts, end, data in line_runs(lines):
             if end is None:  # lines with their ends
                 for raw in texts:
                     number += 1
                     yield read_raw_line(raw, number, ctx)
-            else:
+            else:  # texts, and their bytes (where the line check has them) one after the other in ``data``
+                at: i64 = 0
+                step: i64 = len(end)
                 for text in cast("list[str]", texts):
                     number += 1
-                    yield read_line(text, end, number, ctx)
+                    yield read_line(text, end, number, ctx, data, at)
+                    at += len(text) + step
 
 
 def read_raw_line(raw: str, number: int, ctx: Context) -> Block:
@@ -54,15 +57,16 @@ def read_raw_line(raw: str, number: int, ctx: Context) -> Block:
     return read_line(raw, "", number, ctx)
 
 
-def read_line(text: str, eol: str, number: int, ctx: Context) -> Block:
+def read_line(text: str, eol: str, number: int, ctx: Context, data: bytes = b"", at: i64 = 0) -> Block:
     """Line ``number`` of the program (``text``, ending with ``eol``) as a lexed block; a line the reader
-    refuses is reported and kept as text only."""
+    refuses is reported and kept as text only. ``data``: the line's ASCII bytes from ``at`` on, where the line
+    check has them (``scan_marks``)."""
     # Likeliest first: a line of words only (a CAM program's every line), read whole by the family's word
     # scan (``postproc.rs274.canonical_line``), which also tells a canonical line (a writer may copy it), a
     # line without a G or M word (no call to look for) and the block number; a program number, or a block
     # number the lexer refuses, is the lexer's, as is every other line. A canonical line's words are left
     # unmade (``marks``: where its letters stand), for the steps that read it from there (the plain-block lane).
-    kind, words, sequence, marks = scan_marks(text)
+    kind, words, sequence, marks = scan_marks(text, data, at)
     if kind and not kind & LEXED:
         block = Block(number, text, eol, None if marks else words, marks)
         if kind & CANONICAL:

@@ -56,32 +56,43 @@ def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
     blanks left out) and the number of its block number when its first word is an N with digits only (else
     -1), from one pass: a canonical line needs no split, and its block number no second parse.
     ``NO_WORDS`` when the kind is 0."""
-    kind, words, sequence, _ = _scan(text, True)
+    kind, words, sequence, _ = _scan(text, True, b"", 0)
     return kind, words, sequence
 
 
-def scan_marks(text: str) -> tuple[int, list[tuple[str, str]], int, i64]:
+def scan_marks(text: str, data: bytes = b"", at: i64 = 0) -> tuple[int, list[tuple[str, str]], int, i64]:
     """``scan_words``'s reading of the line, from the same pass, with the words of a canonical line of at most
     ``MARK_WORDS`` words and 255 characters left unmade: their letters' places packed as ``Block.marks`` holds
     them (``postproc.ir.block.marked_words`` makes the same words from them), and ``NO_WORDS`` in their place.
-    Any other line's words come made, with 0 marks."""
-    kind, words, sequence, marks = _scan(text, False)
+    Any other line's words come made, with 0 marks. ``data``: ASCII bytes that hold the line's at ``at`` (the
+    line check's copy of a piece of lines, ``postproc.syntaxes.lines.CheckedLines.runs``), read instead of a copy
+    of the line made here."""
+    kind, words, sequence, marks = _scan(text, False, data, at)
     if kind and not marks:
-        kind, words, sequence, _ = _scan(text, True)  # (a line not canonical, or too long to mark: the words)
+        kind, words, sequence, _ = _scan(text, True, data, at)  # (a line not canonical, or too long to mark: the words)
     return kind, words, sequence, marks
 
 
-def _scan(text: str, keep: bool) -> tuple[int, list[tuple[str, str]], int, i64]:
+def _scan(text: str, keep: bool, data: bytes, at: i64) -> tuple[int, list[tuple[str, str]], int, i64]:
     """The scan (``scan_words``); ``keep`` False: the words' letters' places packed (the fourth answer, or 0
-    where they do not fit or the line is not canonical) instead of the words made."""
-    # The line's characters read where they stand, each once, into ``ch`` (-1 past the end), as ``i`` moves on
-    # (compiled: ``ord(text[i])`` reads the code in place, no object; an ASCII copy of the line was ~240
-    # instructions a line, and reading a character again at each test ~300 more, callgrind): a character outside
-    # ASCII is told where the scan meets it, as no letter, and the line is then no line of words.
+    where they do not fit or the line is not canonical) instead of the words made. ``data``: the line's bytes
+    from ``at`` on (``scan_marks``); empty: the line's own ASCII copy, made here."""
+    # The line's bytes read each once, into ``ch`` (-1 past the end), as ``i`` moves on (a test of the same byte
+    # read it again: ~100 instructions a line, callgrind). Compiled, a byte of a ``bytes`` is read in place with
+    # a bounds check (a character of a ``str`` costs twice that: its kind and data told again each time), from
+    # the line check's ASCII copy of the piece where the reader has it (``data``), else from a copy of the line.
     # Positions as i64 (compiled: machine integers, not tagged ones whose every step checks for overflow);
     # digits and blanks told by comparisons (a table look-up is a second index, with its own checks).
-    b = text
-    n: i64 = len(b)
+    if data:
+        b = data
+        base = at
+    else:
+        try:
+            b = text.encode("ascii")  # compiled, a C call; ``str.isascii`` would be a method look-up
+        except UnicodeEncodeError:
+            return 0, NO_WORDS, -1, 0
+        base = 0
+    n: i64 = len(text)
     table = _CLASS
     letters = _LETTERS
     canonical = True
@@ -91,10 +102,10 @@ def _scan(text: str, keep: bool) -> tuple[int, list[tuple[str, str]], int, i64]:
     marks: i64 = 0  # their letters' places (``keep`` False), from bit MARK_BITS up
     sequence = -1
     i: i64 = 0
-    ch: i64 = ord(b[0]) if n else -1  # the character at i
+    ch: i64 = b[base] if n else -1  # the character at i
     while ch == 32 or ch == 9:  # ' ', '\t'
         i += 1
-        ch = ord(b[i]) if i < n else -1
+        ch = b[base + i] if i < n else -1
     if i != 0 or ch < 0:  # blanks first, or no word at all
         canonical = False
     while ch >= 0:  # at a word's letter, or what stands there
@@ -104,28 +115,28 @@ def _scan(text: str, keep: bool) -> tuple[int, list[tuple[str, str]], int, i64]:
             if c != 59:  # ';'
                 return 0, NO_WORDS, -1, 0
             i += 1
-            ch = ord(b[i]) if i < n else -1
+            ch = b[base + i] if i < n else -1
             while ch == 32 or ch == 9:
                 i += 1
-                ch = ord(b[i]) if i < n else -1
+                ch = b[base + i] if i < n else -1
             if ch >= 0:
                 return 0, NO_WORDS, -1, 0
             canonical = False  # ';': the end of block, written out
             break
         i += 1
-        ch = ord(b[i]) if i < n else -1
+        ch = b[base + i] if i < n else -1
         if ch == 32 or ch == 9:
             canonical = False  # 'X 1.': a blank between the letter and its number
             while ch == 32 or ch == 9:
                 i += 1
-                ch = ord(b[i]) if i < n else -1
+                ch = b[base + i] if i < n else -1
         start = i
         signed = ch == 45 or ch == 43  # '-', '+'
         if signed:
             if ch == 43 or k != _AXIS:  # '+1.', 'T-1': plain, not canonical
                 canonical = False
             i += 1
-            ch = ord(b[i]) if i < n else -1
+            ch = b[base + i] if i < n else -1
         digits = i
         lead = ch  # the number's first character
         first_n = (c == 78 or c == 110) and count == 0  # 'N', 'n' first: its number is the block's
@@ -135,25 +146,25 @@ def _scan(text: str, keep: bool) -> tuple[int, list[tuple[str, str]], int, i64]:
                 if i - digits < _I64_DIGITS:
                     number = number * 10 + (ch - 48)
                 i += 1
-                ch = ord(b[i]) if i < n else -1
+                ch = b[base + i] if i < n else -1
             sequence = number
             if i - digits > _I64_DIGITS:
                 sequence = int(text[digits:i])
         else:
             while 48 <= ch <= 57:
                 i += 1
-                ch = ord(b[i]) if i < n else -1
+                ch = b[base + i] if i < n else -1
         whole = i - digits
         point = ch == 46  # '.'
         if point:
             i += 1
-            ch = ord(b[i]) if i < n else -1
+            ch = b[base + i] if i < n else -1
             fraction = i
             final: i64 = 0  # the last decimal place
             while 48 <= ch <= 57:
                 final = ch
                 i += 1
-                ch = ord(b[i]) if i < n else -1
+                ch = b[base + i] if i < n else -1
             places = i - fraction
             if whole == 0:
                 if places == 0:  # 'X.' is no number
@@ -183,7 +194,7 @@ def _scan(text: str, keep: bool) -> tuple[int, list[tuple[str, str]], int, i64]:
         count += 1
         if ch == 32:  # a space, then (likeliest) the next word's letter
             i += 1
-            ch = ord(b[i]) if i < n else -1
+            ch = b[base + i] if i < n else -1
             if ch < 0:
                 canonical = False  # a blank at the end
                 break
@@ -199,7 +210,7 @@ def _scan(text: str, keep: bool) -> tuple[int, list[tuple[str, str]], int, i64]:
         canonical = False  # canonical: one space between words, no tab
         while ch == 32 or ch == 9:
             i += 1
-            ch = ord(b[i]) if i < n else -1
+            ch = b[base + i] if i < n else -1
     if keep or not canonical or count > MARK_WORDS or n > MARK_MASK:
         return (kind | CANONICAL if canonical else kind), words, sequence, 0
     return kind | CANONICAL, words, sequence, marks | count

@@ -65,10 +65,11 @@ def piece_size(limit: int) -> int:
     return min(limit + 2, PIECE)
 
 
-Run = tuple[Iterable[str], Union[str, None]]
-"""A run of checked lines (``CheckedLines.runs``): a list of their texts without their ends and the end of line
-they all have (the last line of a program may have none: a run of its own, with ""), or the lines with their ends
-and None."""
+Run = tuple[Iterable[str], Union[str, None], bytes]
+"""A run of checked lines (``CheckedLines.runs``): a list of their texts without their ends, the end of line they
+all have (the last line of a program may have none: a run of its own, with "") and their ASCII bytes, ends and all
+(the check's copy, which a reader may read them from: ``rs274.canonical_line.scan_marks``; or b""); or the lines
+with their ends, None and b""."""
 
 
 def checked_lines(lines: Iterable[str], ctx: Context, blanks: str = "") -> CheckedLines:
@@ -94,7 +95,7 @@ class CheckedLines:
         self.blanks = blanks
 
     def __iter__(self) -> Iterator[str]:
-        return chain.from_iterable(lines for lines, _ in self._chunks(False))
+        return chain.from_iterable(lines for lines, _, _ in self._chunks(False))
 
     def runs(self) -> Iterator[Run]:
         """The lines, a run at a time (``Run``), in order."""
@@ -106,7 +107,7 @@ class CheckedLines:
         if getattr(lines, "read", None) is not None and getattr(lines, "readline", None) is not None:
             return _read_chunks(lines, ctx, limit, blanks, split)  # type: ignore[arg-type]
         read = pieces(lines, limit)
-        return zip(_checked_chunks(iter(read), ctx, limit, blanks, read is not lines), repeat(None))
+        return zip(_checked_chunks(iter(read), ctx, limit, blanks, read is not lines), repeat(None), repeat(b""))
 
 
 def line_runs(lines: Iterable[str]) -> Iterable[Run]:
@@ -114,7 +115,7 @@ def line_runs(lines: Iterable[str]) -> Iterable[Run]:
     with their ends, as they come."""
     if isinstance(lines, CheckedLines):
         return lines.runs()
-    return ((lines, None),)
+    return ((lines, None, b""),)
 
 
 def one_end(text: str) -> str | None:
@@ -172,7 +173,7 @@ def _read_chunks(stream: TextIO, ctx: Context, limit: int, blanks: str, split: b
     if first[-1] not in "\r\n" or getattr(stream, "newlines", None) is None:
         for lines in _checked_chunks(chain((first,), iter(partial(stream.readline, piece), "")), ctx, limit, blanks,
                                      True):
-            yield lines, None
+            yield lines, None, b""
         return
     read = stream.read
     number = 0
@@ -190,7 +191,7 @@ def _read_chunks(stream: TextIO, ctx: Context, limit: int, blanks: str, split: b
                     number = yield from _checked_text(whole, ctx, limit, blanks, number, fast, None)
                 for lines in _checked_chunks(iter(partial(_Resumed(held, stream).readline, piece), ""), ctx, limit,
                                              blanks, True, number):
-                    yield lines, None
+                    yield lines, None, b""
                 return
             if not whole:
                 continue
@@ -208,21 +209,22 @@ def _checked_text(text: str, ctx: Context, limit: int, blanks: str, number: int,
     ``end``: the end of line every line of ``text`` has (``one_end``): lines that pass the checks are passed on
     as their texts (split at it, a C call) and that end, the last as a run of its own where it has none."""
     if text.isascii():
-        coded = text.encode("ascii").translate(_CHECKED_CHARS)
+        data = text.encode("ascii")
+        coded = data.translate(_CHECKED_CHARS)
         if end is not None:  # (``split`` at it splits where the stream does: no other separator counts)
             texts = text.split(end)
             last = texts.pop()  # "" where the last line has its end
             if (len(texts[0]) + len(end) if texts else len(last)) <= fast and _LONG_RUN not in coded:
                 if texts:
-                    yield texts, end
+                    yield texts, end, data
                 if last:
-                    yield [last], ""
+                    yield [last], "", b""
                 return number + len(texts) + (1 if last else 0)
             lines = io.StringIO(text, newline="").readlines()  # (it may hold another separator: not ``splitlines``)
         elif _SEPARATOR not in coded:  # ``splitlines`` splits where the stream does
             lines = text.splitlines(True)
             if len(lines[0]) <= fast and _LONG_RUN not in coded:
-                yield lines, None
+                yield lines, None, b""
                 return number + len(lines)
         else:
             lines = io.StringIO(text, newline="").readlines()
@@ -239,7 +241,7 @@ def _checked_text(text: str, ctx: Context, limit: int, blanks: str, number: int,
             message, column = problem
             ctx.diagnostics.error(ParseError(message, Location(ctx.file, number, column + bom)))
             checked.append(line[len(line.rstrip("\r\n")):])
-    yield checked, None
+    yield checked, None, b""
     return number
 
 
