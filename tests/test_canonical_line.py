@@ -28,8 +28,9 @@ _line = st.builds(
     lambda lead, words, seps, tail: lead + "".join(w + s for w, s in zip(words, seps)) + tail,
     st.sampled_from(["", "", "", " ", "\t"]),
     st.lists(_word, min_size=0, max_size=6),
-    st.lists(st.sampled_from([" ", " ", " ", "  ", "", "\t", "é", ";"]), min_size=6, max_size=6),
-    st.sampled_from(["", "", " ", ";", "; ", ";;", "0", "\u0661"]),
+    st.lists(st.sampled_from([" ", " ", " ", "  ", "", "\t", "é", ";", "\uff11", "\U0001d7cf", "\u00a0"]),
+             min_size=6, max_size=6),
+    st.sampled_from(["", "", " ", ";", "; ", ";;", "0", "\u0661", "\U0001d7cf"]),
 )
 
 
@@ -154,3 +155,13 @@ def test_a_marked_block_is_the_block_of_its_words() -> None:
     for twin in (copy.copy(Block(1, line, "\n", None, marks)), pickle.loads(pickle.dumps(Block(1, line, "\n", None,
                                                                                             marks)))):
         assert twin.words == made.words
+
+
+@settings(max_examples=1000)
+@given(_line, _line, _line)
+def test_the_scan_of_a_line_read_from_its_pieces_bytes_is_the_scan_of_the_line(before: str, line: str, after: str) -> None:
+    # the Fanuc reader's scan reads a line's bytes where the line check's ASCII copy of its piece holds them
+    # (``scan_marks(text, data, at)``): the same answer as the line's own
+    if (before + line + after).isascii():
+        data = (before + "\n" + line + "\n" + after).encode("ascii")
+        assert scan_marks(line, data, len(before) + 1) == scan_marks(line)

@@ -318,3 +318,90 @@ def test_the_chunk_checks_are_line_problem_line_by_line(lines, limit, bom):
             errors.append(f"p.nc:{number}:{problem[1] + lead}: warning: {problem[0]}")
     assert got == expected
     assert [str(w) for w in ctx.diagnostics.warnings] == errors
+
+
+_RUN_LINES = st.lists(st.text(alphabet="GX1. 0123456789(é\v\f\x1c\x85\u2028;", max_size=60), max_size=40)
+
+
+def _split(line: str) -> tuple[str, str]:
+    """A physical line as (text, end of line), as a reader splits it."""
+    text = line.rstrip("\r\n")
+    return text, line[len(text):]
+
+
+@given(lines=_RUN_LINES, end=st.sampled_from(["\n", "\r\n", "mixed"]), odd=ODD_TEXT, tail=st.sampled_from(
+       ["", "G1 X1.", "X1\r", "\r"]), limit=st.integers(1, 70), piece=st.sampled_from([4, 7, 16, 64, 4096]),
+       bom=st.booleans(), newline=st.sampled_from(["", None]))
+@settings(max_examples=500, deadline=None)
+def test_runs_are_the_checked_lines_split_from_their_ends(lines, end, odd, tail, limit, piece, bom, newline):
+    # ``CheckedLines.runs`` passes a piece of lines that all end alike as their texts and that end: the lines and
+    # errors are those the lines with their ends give, whatever the ends (one for the program, or mixed),
+    # separators ``str.splitlines`` knows, long lines and numbers, a last line without an end, and however the
+    # lines are given (a stream read in pieces, one read by ``readline``, a list)
+    import postproc.syntaxes.lines
+    from postproc.context import Context
+    from postproc.errors import Diagnostics, ErrorLevel
+    body = odd if end == "mixed" else "".join(line + end for line in lines)
+    program = ("\ufeff" if bom else "") + body + tail
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(postproc.syntaxes.lines, "PIECE", piece)
+        for make in (lambda: io.StringIO(program, newline=newline),
+                     lambda: _ReadlineOnly(io.StringIO(program, newline=newline)),
+                     lambda: list(io.StringIO(program, newline=newline))):
+            got = []
+            for runs in (False, True):
+                ctx = Context("p.nc", MachineSetup(limits=Limits(line_length=limit)), Diagnostics(
+                    ErrorLevel.WARN, warn_stream=io.StringIO()), "fanuc")
+                checked = postproc.syntaxes.lines.checked_lines(make(), ctx)
+                if runs:
+                    split = []
+                    for texts, run_end, data in checked.runs():
+                        if run_end is None:
+                            assert data == b""
+                            split.extend(_split(line) for line in texts)
+                        else:
+                            assert isinstance(texts, list) and texts and (run_end or len(texts) == 1)
+                            assert data == b"" or data.startswith("".join(text + run_end for text in texts).encode())
+                            split.extend((text, run_end) for text in texts)
+                else:
+                    split = [_split(line) for line in checked]
+                got.append((split, [str(w) for w in ctx.diagnostics.warnings]))
+            assert got[0] == got[1]
+
+
+@pytest.mark.parametrize("end", ["\n", "\r\n"])
+def test_a_stream_whose_lines_end_alike_comes_in_runs_of_texts(end) -> None:
+    # the runs are taken where they apply (a stream read in pieces, every line ending alike; the last without an end
+    # a run of its own), and not where the ends differ
+    import postproc.syntaxes.lines
+    from postproc.context import Context
+    from postproc.errors import Diagnostics
+    ctx = Context("p.nc", MachineSetup(), Diagnostics(), "fanuc")
+    program = f"G0 X1.{end}G1 X2.{end}M30"
+    assert list(postproc.syntaxes.lines.checked_lines(io.StringIO(program, newline=""), ctx).runs()) == [
+        (["G0 X1.", "G1 X2."], end, f"G0 X1.{end}G1 X2.{end}".encode("ascii")), (["M30"], "", b"")]
+    mixed = "G0 X1.\r\nG1 X2.\nM30\n"
+    assert list(postproc.syntaxes.lines.checked_lines(io.StringIO(mixed, newline=""), ctx).runs()) == [
+        (["G0 X1.\r\n", "G1 X2.\n", "M30\n"], None, b"")]
+
+
+@given(lines=_RUN_LINES, cam=st.lists(st.sampled_from(["N10 G1 X1. Y2.", "G0 X1", "N20 G2 X1. I0.5", "#1=2.",
+                                                        "O1234", "M98 P12", "G65 P9010 A1.", "N7 X-0. F100.", ""]),
+                                       max_size=30), end=st.sampled_from(["\n", "\r\n"]), tail=st.booleans())
+@settings(max_examples=200, deadline=None)
+def test_the_fanuc_reader_reads_runs_as_it_reads_lines(lines, cam, end, tail):
+    # the Fanuc reader reads the runs of checked lines (texts split from their end) and lines with their ends
+    # into the same blocks and errors
+    from dialects.fanuc.reader import FanucReader
+    from postproc.context import Context
+    from postproc.errors import Diagnostics, ErrorLevel
+    import postproc.syntaxes.lines
+    program = "".join(line + end for line in cam + lines) + ("G1 X5." if tail else "")
+    got = []
+    for runs in (True, False):
+        ctx = Context("p.nc", MachineSetup(), Diagnostics(ErrorLevel.WARN, warn_stream=io.StringIO()), "fanuc")
+        checked = postproc.syntaxes.lines.checked_lines(io.StringIO(program, newline=""), ctx)
+        blocks = list(FanucReader(ctx).read(checked if runs else list(checked)))
+        got.append(([(b.line, b.text, b.eol, b.words, b.values, b.sections, b.canonical) for b in blocks],
+                    [str(w) for w in ctx.diagnostics.warnings]))
+    assert got[0] == got[1]

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from mypy_extensions import i64, mypyc_attr
 
-from typing import Iterable, Iterator
+from typing import Iterable, Iterator, cast
 
 from postproc.context import Context
 from postproc.dialect import Reader
@@ -13,7 +13,7 @@ from postproc.errors import PostprocError
 from postproc.ir import Block, Sequence
 from postproc.ir.block import MARK_BITS, MARK_MASK
 
-from postproc.syntaxes.lines import BOM, EOF_BYTE, lexable
+from postproc.syntaxes.lines import BOM, EOF_BYTE, lexable, line_runs
 
 from postproc.rs274.canonical_line import CANONICAL, CODES, LEXED, scan_marks
 from postproc.rs274.lexer import lex_block
@@ -26,34 +26,47 @@ from .macro import read_call
 class FanucReader(Reader):
     def read(self, lines: Iterable[str]) -> Iterator[Block]:
         # The generator only counts lines: the work of a line is ``read_line``'s, a plain function (compiled,
-        # its locals are C variables, not fields of the generator's frame object).
+        # its locals are C variables, not fields of the generator's frame object). Checked lines come in runs
+        # (``postproc.syntaxes.lines.line_runs``): mostly many texts already split from the end they share.
         ctx = self.ctx
         number = 0
-        for raw in lines:
-            number += 1
-            yield read_line(raw, number, ctx)
+        for texts, end, data in line_runs(lines):
+            if end is None:  # lines with their ends
+                for raw in texts:
+                    number += 1
+                    yield read_raw_line(raw, number, ctx)
+            else:  # texts, and their bytes (where the line check has them) one after the other in ``data``
+                at: i64 = 0
+                step: i64 = len(end)
+                for text in cast("list[str]", texts):
+                    number += 1
+                    yield read_line(text, end, number, ctx, data, at)
+                    at += len(text) + step
 
 
-def read_line(raw: str, number: int, ctx: Context) -> Block:
-    """Line ``number`` of the program (``raw``, with its end of line) as a lexed block; a line the reader
-    refuses is reported and kept as text only."""
+def read_raw_line(raw: str, number: int, ctx: Context) -> Block:
+    """``read_line`` of a line with its end of line (``raw``)."""
     size: i64 = len(raw)
     last: i64 = ord(raw[size - 1]) if size else 0  # (compiled: the code read in place, no string object)
     if last == 10:  # LF
         if size > 1 and ord(raw[size - 2]) == 13:  # CR LF
-            text, eol = raw[:-2], "\r\n"
-        else:
-            text, eol = raw[:-1], "\n"
-    elif last == 13:  # CR
-        text, eol = raw[:-1], "\r"
-    else:
-        text, eol = raw, ""
+            return read_line(raw[:-2], "\r\n", number, ctx)
+        return read_line(raw[:-1], "\n", number, ctx)
+    if last == 13:  # CR
+        return read_line(raw[:-1], "\r", number, ctx)
+    return read_line(raw, "", number, ctx)
+
+
+def read_line(text: str, eol: str, number: int, ctx: Context, data: bytes = b"", at: i64 = 0) -> Block:
+    """Line ``number`` of the program (``text``, ending with ``eol``) as a lexed block; a line the reader
+    refuses is reported and kept as text only. ``data``: the line's ASCII bytes from ``at`` on, where the line
+    check has them (``scan_marks``)."""
     # Likeliest first: a line of words only (a CAM program's every line), read whole by the family's word
     # scan (``postproc.rs274.canonical_line``), which also tells a canonical line (a writer may copy it), a
     # line without a G or M word (no call to look for) and the block number; a program number, or a block
     # number the lexer refuses, is the lexer's, as is every other line. A canonical line's words are left
     # unmade (``marks``: where its letters stand), for the steps that read it from there (the plain-block lane).
-    kind, words, sequence, marks = scan_marks(text)
+    kind, words, sequence, marks = scan_marks(text, data, at)
     if kind and not kind & LEXED:
         block = Block(number, text, eol, None if marks else words, marks)
         if kind & CANONICAL:

@@ -36,5 +36,9 @@ the one algorithm or has gone, so the reading has one path, compiled or pure.
   (``line_problem``): the chunk test is a sufficient condition for ``line_problem`` finding nothing, not a
   second check, so it never decides a line is wrong; ``tests/test_lines.py`` holds the two to the same lines
   and errors on random chunks, as it holds a stream read many lines at once to the same stream read a line
-  at a time.
+  at a time. Its lines come as runs too (``CheckedLines.runs``, what the Fanuc reader reads): a stream's piece
+  of lines that all end alike as their texts, split from that end by one ``str.split``, and any other lines
+  with their ends, which the reader splits itself. That is the one way the reader reads, not a lane: the same
+  lines split where they were split before (``tests/test_lines.py`` holds runs to the lines with their ends,
+  and the reader's blocks read from runs to those read from lines, on random programs).
 """

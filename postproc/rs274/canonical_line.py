@@ -1,4 +1,4 @@
-"""The ISO word scan: the words of a line of words only, read in one pass over its bytes, and whether the
+"""The ISO word scan: the words of a line of words only, read in one pass over its characters, and whether the
 line is already in canonical spelling (``postproc.numbers.CANONICAL_BLOCK``) from the same pass.
 
 This is the family's one reading of plain words (``postproc.rs274.lexer`` reads every line's words with
@@ -56,32 +56,43 @@ def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
     blanks left out) and the number of its block number when its first word is an N with digits only (else
     -1), from one pass: a canonical line needs no split, and its block number no second parse.
     ``NO_WORDS`` when the kind is 0."""
-    kind, words, sequence, _ = _scan(text, True)
+    kind, words, sequence, _ = _scan(text, True, b"", 0)
     return kind, words, sequence
 
 
-def scan_marks(text: str) -> tuple[int, list[tuple[str, str]], int, i64]:
+def scan_marks(text: str, data: bytes = b"", at: i64 = 0) -> tuple[int, list[tuple[str, str]], int, i64]:
     """``scan_words``'s reading of the line, from the same pass, with the words of a canonical line of at most
     ``MARK_WORDS`` words and 255 characters left unmade: their letters' places packed as ``Block.marks`` holds
     them (``postproc.ir.block.marked_words`` makes the same words from them), and ``NO_WORDS`` in their place.
-    Any other line's words come made, with 0 marks."""
-    kind, words, sequence, marks = _scan(text, False)
+    Any other line's words come made, with 0 marks. ``data``: ASCII bytes that hold the line's at ``at`` (the
+    line check's copy of a piece of lines, ``postproc.syntaxes.lines.CheckedLines.runs``), read instead of a copy
+    of the line made here."""
+    kind, words, sequence, marks = _scan(text, False, data, at)
     if kind and not marks:
-        kind, words, sequence, _ = _scan(text, True)  # (a line not canonical, or too long to mark: the words)
+        kind, words, sequence, _ = _scan(text, True, data, at)  # (a line not canonical, or too long to mark: the words)
     return kind, words, sequence, marks
 
 
-def _scan(text: str, keep: bool) -> tuple[int, list[tuple[str, str]], int, i64]:
+def _scan(text: str, keep: bool, data: bytes, at: i64) -> tuple[int, list[tuple[str, str]], int, i64]:
     """The scan (``scan_words``); ``keep`` False: the words' letters' places packed (the fourth answer, or 0
-    where they do not fit or the line is not canonical) instead of the words made."""
-    try:
-        b = text.encode("ascii")  # compiled, a C call; ``str.isascii`` would be a method look-up
-    except UnicodeEncodeError:
-        return 0, NO_WORDS, -1, 0
+    where they do not fit or the line is not canonical) instead of the words made. ``data``: the line's bytes
+    from ``at`` on (``scan_marks``); empty: the line's own ASCII copy, made here."""
+    # The line's bytes read each once, into ``ch`` (-1 past the end), as ``i`` moves on (a test of the same byte
+    # read it again: ~100 instructions a line, callgrind). Compiled, a byte of a ``bytes`` is read in place with
+    # a bounds check (a character of a ``str`` costs twice that: its kind and data told again each time), from
+    # the line check's ASCII copy of the piece where the reader has it (``data``), else from a copy of the line.
     # Positions as i64 (compiled: machine integers, not tagged ones whose every step checks for overflow);
-    # each byte read once into a local, digits and blanks told by comparisons (a table look-up is a second
-    # index, with its own checks).
-    n: i64 = len(b)
+    # digits and blanks told by comparisons (a table look-up is a second index, with its own checks).
+    if data:
+        b = data
+        base = at
+    else:
+        try:
+            b = text.encode("ascii")  # compiled, a C call; ``str.isascii`` would be a method look-up
+        except UnicodeEncodeError:
+            return 0, NO_WORDS, -1, 0
+        base = 0
+    n: i64 = len(text)
     table = _CLASS
     letters = _LETTERS
     canonical = True
@@ -91,65 +102,77 @@ def _scan(text: str, keep: bool) -> tuple[int, list[tuple[str, str]], int, i64]:
     marks: i64 = 0  # their letters' places (``keep`` False), from bit MARK_BITS up
     sequence = -1
     i: i64 = 0
-    while i < n and (b[i] == 32 or b[i] == 9):  # ' ', '\t'
+    ch: i64 = b[base] if n else -1  # the character at i
+    while ch == 32 or ch == 9:  # ' ', '\t'
         i += 1
-    if i != 0 or i == n:  # blanks first, or no word at all
+        ch = b[base + i] if i < n else -1
+    if i != 0 or ch < 0:  # blanks first, or no word at all
         canonical = False
-    c = b[i] if i < n else 0  # the byte at i: a letter, or the end of block
-    while i < n:
-        k = table[c]
+    while ch >= 0:  # at a word's letter, or what stands there
+        c = ch
+        k = table[c] if c < 256 else 0  # (a code past the table's 256: no letter)
         if k < _AXIS:
             if c != 59:  # ';'
                 return 0, NO_WORDS, -1, 0
             i += 1
-            while i < n and (b[i] == 32 or b[i] == 9):
+            ch = b[base + i] if i < n else -1
+            while ch == 32 or ch == 9:
                 i += 1
-            if i != n:
+                ch = b[base + i] if i < n else -1
+            if ch >= 0:
                 return 0, NO_WORDS, -1, 0
             canonical = False  # ';': the end of block, written out
             break
         i += 1
-        if i < n and (b[i] == 32 or b[i] == 9):
+        ch = b[base + i] if i < n else -1
+        if ch == 32 or ch == 9:
             canonical = False  # 'X 1.': a blank between the letter and its number
-            while i < n and (b[i] == 32 or b[i] == 9):
+            while ch == 32 or ch == 9:
                 i += 1
+                ch = b[base + i] if i < n else -1
         start = i
-        sign = b[i] if i < n else 0
-        signed = sign == 45 or sign == 43  # '-', '+'
+        signed = ch == 45 or ch == 43  # '-', '+'
         if signed:
-            i += 1
-            if sign == 43 or k != _AXIS:  # '+1.', 'T-1': plain, not canonical
+            if ch == 43 or k != _AXIS:  # '+1.', 'T-1': plain, not canonical
                 canonical = False
+            i += 1
+            ch = b[base + i] if i < n else -1
         digits = i
+        lead = ch  # the number's first character
         first_n = (c == 78 or c == 110) and count == 0  # 'N', 'n' first: its number is the block's
         if first_n:
             number: i64 = 0  # (a machine integer: no checked multiplication a digit; summed up to 18 digits)
-            while i < n and 48 <= b[i] <= 57:
+            while 48 <= ch <= 57:
                 if i - digits < _I64_DIGITS:
-                    d: i64 = b[i]
-                    number = number * 10 + (d - 48)
+                    number = number * 10 + (ch - 48)
                 i += 1
+                ch = b[base + i] if i < n else -1
             sequence = number
             if i - digits > _I64_DIGITS:
                 sequence = int(text[digits:i])
         else:
-            while i < n and 48 <= b[i] <= 57:
+            while 48 <= ch <= 57:
                 i += 1
+                ch = b[base + i] if i < n else -1
         whole = i - digits
-        point = i < n and b[i] == 46  # '.'
+        point = ch == 46  # '.'
         if point:
             i += 1
+            ch = b[base + i] if i < n else -1
             fraction = i
-            while i < n and 48 <= b[i] <= 57:
+            final: i64 = 0  # the last decimal place
+            while 48 <= ch <= 57:
+                final = ch
                 i += 1
+                ch = b[base + i] if i < n else -1
             places = i - fraction
             if whole == 0:
                 if places == 0:  # 'X.' is no number
                     return 0, NO_WORDS, -1, 0
                 canonical = False  # '.5'
-            elif (k != _AXIS or whole > 1 and b[digits] == 48 or places > _MAX_FRACTION
-                  or places > 0 and b[i - 1] == 48
-                  or signed and places == 0 and whole == 1 and b[digits] == 48):
+            elif (k != _AXIS or whole > 1 and lead == 48 or places > _MAX_FRACTION
+                  or places > 0 and final == 48
+                  or signed and places == 0 and whole == 1 and lead == 48):
                 canonical = False  # 'G1.5', '00.5', more than six places, '0.10', '-0.'
         else:
             if whole == 0:  # a letter without a number
@@ -169,28 +192,25 @@ def _scan(text: str, keep: bool) -> tuple[int, list[tuple[str, str]], int, i64]:
         elif count < MARK_WORDS:
             marks |= (start - 1) << (MARK_BITS * (count + 1))  # (a canonical word's letter stands just before)
         count += 1
-        if i == n:
-            break
-        c = b[i]
-        if c == 32:  # a space, then (likeliest) the next word's letter
+        if ch == 32:  # a space, then (likeliest) the next word's letter
             i += 1
-            if i == n:
+            ch = b[base + i] if i < n else -1
+            if ch < 0:
                 canonical = False  # a blank at the end
                 break
-            c = b[i]
-            if table[c] >= _AXIS:
+            if ch < 256 and table[ch] >= _AXIS:
                 continue
-        elif c == 59 or table[c] >= _AXIS:  # ';', or the next word at once ('X1Y2')
+        elif ch < 0:
+            break
+        elif ch == 59 or ch < 256 and table[ch] >= _AXIS:  # ';', or the next word at once ('X1Y2')
             canonical = False
             continue
-        elif c != 9:
+        elif ch != 9:
             return 0, NO_WORDS, -1, 0
         canonical = False  # canonical: one space between words, no tab
-        while i < n and (b[i] == 32 or b[i] == 9):
+        while ch == 32 or ch == 9:
             i += 1
-        if i == n:
-            break
-        c = b[i]
+            ch = b[base + i] if i < n else -1
     if keep or not canonical or count > MARK_WORDS or n > MARK_MASK:
         return (kind | CANONICAL if canonical else kind), words, sequence, 0
     return kind | CANONICAL, words, sequence, marks | count

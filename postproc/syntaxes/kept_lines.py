@@ -34,13 +34,21 @@ class KeptLines:
         self.skip = 0
         """Lines of the oldest chunk already dropped (beyond ``maxlen``)."""
         self.size = 0
+        self.plain = True
+        """The open chunk holds plain lines only (strings without a ``\\n``), told as each is appended."""
 
     def append(self, item: Kept) -> None:
         if self.maxlen <= 0:
             return
-        self.open.append(item)
+        lines = self.open
+        lines.append(item)
+        # A line is told plain as it comes (the string just read, a search of a few dozen characters): not by a
+        # pass over the chunk's items and a count of the separators of the joined chunk as it is closed (~500
+        # instructions a line, callgrind), which met each line again long after it was read.
+        if self.plain and (not isinstance(item, str) or "\n" in item):
+            self.plain = False
         self.size += 1
-        if len(self.open) == CHUNK:
+        if len(lines) == CHUNK:
             self._close()
         if self.size > self.maxlen:
             self._drop_oldest()
@@ -48,14 +56,8 @@ class KeptLines:
     def _close(self) -> None:
         lines = self.open
         self.open = []
-        for item in lines:
-            if not isinstance(item, str):
-                self.chunks.append(lines)
-                return
-        joined = "\n".join(cast("list[str]", lines))
-        # A line holding a "\n" of its own is told by one count over the joined chunk (a C loop), not by a
-        # search a line (~100 instructions each, callgrind): the chunk then has more separators than joins.
-        self.chunks.append(joined if joined.count("\n") == len(lines) - 1 else lines)
+        self.chunks.append("\n".join(cast("list[str]", lines)) if self.plain else lines)
+        self.plain = True
 
     def _drop_oldest(self) -> None:
         self.size -= 1

@@ -22,8 +22,8 @@ from __future__ import annotations
 
 import io
 from functools import partial
-from itertools import chain, islice
-from typing import Callable, Final, Generator, Iterable, Iterator, TextIO
+from itertools import chain, islice, repeat
+from typing import Callable, Final, Generator, Iterable, Iterator, TextIO, Union
 
 from ..context import Context
 from ..errors import Location, ParseError, character_name
@@ -65,7 +65,14 @@ def piece_size(limit: int) -> int:
     return min(limit + 2, PIECE)
 
 
-def checked_lines(lines: Iterable[str], ctx: Context, blanks: str = "") -> Iterator[str]:
+Run = tuple[Iterable[str], Union[str, None], bytes]
+"""A run of checked lines (``CheckedLines.runs``): a list of their texts without their ends, the end of line they
+all have (the last line of a program may have none: a run of its own, with "") and their ASCII bytes, ends and all
+(the check's copy, which a reader may read them from: ``rs274.canonical_line.scan_marks``; or b""); or the lines
+with their ends, None and b""."""
+
+
+def checked_lines(lines: Iterable[str], ctx: Context, blanks: str = "") -> CheckedLines:
     """``lines`` as they are; a line that fails a check (see the module docstring) as an empty line.
     ``blanks``: the non-ASCII characters the reader reads as blanks (``Reader.BLANKS``).
 
@@ -73,11 +80,51 @@ def checked_lines(lines: Iterable[str], ctx: Context, blanks: str = "") -> Itera
     one substring search over the joined chunk) and passed on by ``chain`` without a Python step per
     line; only a chunk that fails them is checked line by line. (A regex search per line cost 5 % of a
     copy-through translation.)"""
-    limit = ctx.setup.limits.line_length
-    if getattr(lines, "read", None) is not None and getattr(lines, "readline", None) is not None:
-        return chain.from_iterable(_read_chunks(lines, ctx, limit, blanks))  # type: ignore[arg-type]
-    read = pieces(lines, limit)
-    return chain.from_iterable(_checked_chunks(iter(read), ctx, limit, blanks, read is not lines))
+    return CheckedLines(lines, ctx, blanks)
+
+
+class CheckedLines:
+    """The checked lines of a program (``checked_lines``), read once: iterated, each line with its end of line
+    (what ``Reader.read`` takes); or as ``runs``, the same lines and errors, where a stream's piece of many lines
+    all ending alike is passed on split from their ends by one C call (``str.split``): a reader that takes runs
+    makes no string a line to cut its end off (~400 instructions a CAM line: callgrind)."""
+
+    def __init__(self, lines: Iterable[str], ctx: Context, blanks: str) -> None:
+        self.lines = lines
+        self.ctx = ctx
+        self.blanks = blanks
+
+    def __iter__(self) -> Iterator[str]:
+        return chain.from_iterable(lines for lines, _, _ in self._chunks(False))
+
+    def runs(self) -> Iterator[Run]:
+        """The lines, a run at a time (``Run``), in order."""
+        return self._chunks(True)
+
+    def _chunks(self, split: bool) -> Iterator[Run]:
+        lines, ctx, blanks = self.lines, self.ctx, self.blanks
+        limit = ctx.setup.limits.line_length
+        if getattr(lines, "read", None) is not None and getattr(lines, "readline", None) is not None:
+            return _read_chunks(lines, ctx, limit, blanks, split)  # type: ignore[arg-type]
+        read = pieces(lines, limit)
+        return zip(_checked_chunks(iter(read), ctx, limit, blanks, read is not lines), repeat(None), repeat(b""))
+
+
+def line_runs(lines: Iterable[str]) -> Iterable[Run]:
+    """``lines`` as runs (``Run``): ``CheckedLines.runs`` where they are checked lines, else one run of the lines
+    with their ends, as they come."""
+    if isinstance(lines, CheckedLines):
+        return lines.runs()
+    return ((lines, None, b""),)
+
+
+def one_end(text: str) -> str | None:
+    """The end of line that ends every line of ``text`` where its lines are split at CR, LF and CR LF (the
+    last line may have none): LF where it holds no CR, CR LF where every CR and LF stand in one; else None."""
+    if "\r" not in text:
+        return "\n"
+    pairs = text.count("\r\n")
+    return "\r\n" if pairs == text.count("\r") and pairs == text.count("\n") else None
 
 
 class _Resumed:
@@ -106,7 +153,7 @@ class _Resumed:
         return held + self.stream.readline(size - len(held))
 
 
-def _read_chunks(stream: TextIO, ctx: Context, limit: int, blanks: str) -> Iterator[list[str]]:
+def _read_chunks(stream: TextIO, ctx: Context, limit: int, blanks: str, split: bool) -> Iterator[Run]:
     """``_checked_chunks`` of a text stream, read in pieces of many lines (``read``) and split here: the same
     lines and errors, without a ``readline`` call a line (~1,000 instructions a CAM line: callgrind).
 
@@ -116,15 +163,17 @@ def _read_chunks(stream: TextIO, ctx: Context, limit: int, blanks: str) -> Itera
     the rest ``fast`` characters at a time: every line after a chunk's first then fits the fast check, and
     the first (the line a read cut, joined) is measured. A line not ended within ``fast`` characters
     (longer than the limit, or than ``PIECE``) goes back to ``_checked_chunks`` with the rest of the stream
-    (``_Resumed``), as does a stream that splits lines another way."""
+    (``_Resumed``), as does a stream that splits lines another way. ``split``: a piece whose lines all end alike
+    (``one_end``) is passed on as their texts and that end (``Run``)."""
     piece = piece_size(limit)
     fast = min(limit, piece - 1)
     first = stream.readline(piece)
     if not first:
         return
     if first[-1] not in "\r\n" or getattr(stream, "newlines", None) is None:
-        yield from _checked_chunks(chain((first,), iter(partial(stream.readline, piece), "")), ctx, limit, blanks,
-                                   True)
+        for lines in _checked_chunks(chain((first,), iter(partial(stream.readline, piece), "")), ctx, limit, blanks,
+                                     True):
+            yield lines, None, b""
         return
     read = stream.read
     number = 0
@@ -139,9 +188,10 @@ def _read_chunks(stream: TextIO, ctx: Context, limit: int, blanks: str) -> Itera
             whole, held = text[:end], text[end:]
             if len(held) > fast:  # a line this long is read in pieces, and maybe never whole
                 if whole:  # (never: only a line begun in an earlier read can be this long)
-                    number = yield from _checked_text(whole, ctx, limit, blanks, number, fast)
-                yield from _checked_chunks(iter(partial(_Resumed(held, stream).readline, piece), ""), ctx, limit,
-                                           blanks, True, number)
+                    number = yield from _checked_text(whole, ctx, limit, blanks, number, fast, None)
+                for lines in _checked_chunks(iter(partial(_Resumed(held, stream).readline, piece), ""), ctx, limit,
+                                             blanks, True, number):
+                    yield lines, None, b""
                 return
             if not whole:
                 continue
@@ -149,19 +199,32 @@ def _read_chunks(stream: TextIO, ctx: Context, limit: int, blanks: str) -> Itera
             return
         else:
             whole, held = text, ""  # the last line, without an end of line
-        number = yield from _checked_text(whole, ctx, limit, blanks, number, fast)
+        number = yield from _checked_text(whole, ctx, limit, blanks, number, fast, one_end(whole) if split else None)
 
 
-def _checked_text(text: str, ctx: Context, limit: int, blanks: str, number: int,
-                  fast: int) -> Generator[list[str], None, int]:
+def _checked_text(text: str, ctx: Context, limit: int, blanks: str, number: int, fast: int,
+                  end: str | None) -> Generator[Run, None, int]:
     """Yield the whole lines ``text`` holds (lines ``number + 1`` on), checked as ``_checked_chunks`` checks
-    them, as one chunk; returns the number of the last. Every line but the first is at most ``fast`` long."""
+    them, as one chunk; returns the number of the last. Every line but the first is at most ``fast`` long.
+    ``end``: the end of line every line of ``text`` has (``one_end``): lines that pass the checks are passed on
+    as their texts (split at it, a C call) and that end, the last as a run of its own where it has none."""
     if text.isascii():
-        coded = text.encode("ascii").translate(_CHECKED_CHARS)
-        if _SEPARATOR not in coded:  # ``splitlines`` splits where the stream does
+        data = text.encode("ascii")
+        coded = data.translate(_CHECKED_CHARS)
+        if end is not None:  # (``split`` at it splits where the stream does: no other separator counts)
+            texts = text.split(end)
+            last = texts.pop()  # "" where the last line has its end
+            if (len(texts[0]) + len(end) if texts else len(last)) <= fast and _LONG_RUN not in coded:
+                if texts:
+                    yield texts, end, data
+                if last:
+                    yield [last], "", b""
+                return number + len(texts) + (1 if last else 0)
+            lines = io.StringIO(text, newline="").readlines()  # (it may hold another separator: not ``splitlines``)
+        elif _SEPARATOR not in coded:  # ``splitlines`` splits where the stream does
             lines = text.splitlines(True)
             if len(lines[0]) <= fast and _LONG_RUN not in coded:
-                yield lines
+                yield lines, None, b""
                 return number + len(lines)
         else:
             lines = io.StringIO(text, newline="").readlines()
@@ -178,7 +241,7 @@ def _checked_text(text: str, ctx: Context, limit: int, blanks: str, number: int,
             message, column = problem
             ctx.diagnostics.error(ParseError(message, Location(ctx.file, number, column + bom)))
             checked.append(line[len(line.rstrip("\r\n")):])
-    yield checked
+    yield checked, None, b""
     return number
 
 
