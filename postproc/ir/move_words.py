@@ -44,6 +44,11 @@ class MoveWords:
         self.x = 0.0
         self.y = 0.0
         self.z = 0.0
+        self.x_word: object = None
+        self.y_word: object = None
+        self.z_word: object = None
+        """The words read (the ``float`` objects of ``x``, ``y``, ``z``, where ``bits`` has theirs): a reader that
+        stores them (the modal state's position) stores these, not new numbers."""
         self.machine: frozenset[str] | None = None
         """The axes ``on`` was last asked about (a run's machine: one set for the run)."""
         self.machine_bits = 0
@@ -63,6 +68,7 @@ class MoveWords:
             if type(x) is not float:
                 return self._other(motion, axes, size)
             self.x = float(x)
+            self.x_word = x
             bits = X
             found = 1
         if found < size:
@@ -71,6 +77,7 @@ class MoveWords:
                 if type(y) is not float:
                     return self._other(motion, axes, size)
                 self.y = float(y)
+                self.y_word = y
                 bits |= Y
                 found += 1
         if found < size:
@@ -79,6 +86,7 @@ class MoveWords:
                 if type(z) is not float:
                     return self._other(motion, axes, size)
                 self.z = float(z)
+                self.z_word = z
                 bits |= Z
                 found += 1
         if found < size:
