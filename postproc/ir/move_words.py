@@ -65,28 +65,28 @@ class MoveWords:
         found = 0  # (three looks by key: a loop over the items costs ~300 instructions a word compiled)
         x = axes.get("X")
         if x is not None:
+            self.x_word = x  # (before the type test: narrowed, compiled, it would be unboxed and boxed anew)
             if type(x) is not float:
                 return self._other(motion, axes, size)
             self.x = float(x)
-            self.x_word = x
             bits = X
             found = 1
         if found < size:
             y = axes.get("Y")
             if y is not None:
+                self.y_word = y
                 if type(y) is not float:
                     return self._other(motion, axes, size)
                 self.y = float(y)
-                self.y_word = y
                 bits |= Y
                 found += 1
         if found < size:
             z = axes.get("Z")
             if z is not None:
+                self.z_word = z
                 if type(z) is not float:
                     return self._other(motion, axes, size)
                 self.z = float(z)
-                self.z_word = z
                 bits |= Z
                 found += 1
         if found < size:
