@@ -177,3 +177,43 @@ def test_an_expansions_end_noted_is_the_position_updated(steps: list[tuple[str, 
             assert set(given_axes) <= {"X", "Y", "Z"} and all(type(v) is float for v in given_axes.values())
         notes.into(position)
         assert position == expected
+
+
+machines = st.sampled_from([frozenset("XYZ"), frozenset("XZ"), frozenset("XY"), frozenset("XYZA"), frozenset("YZU")])
+
+
+@given(machines, st.lists(st.tuples(st.sampled_from(["linear", "rapid", "linear"]), axes), max_size=10))
+@example(frozenset("XYZ"), [("linear", {"Z": 1.0, "X": 2.0}), ("rapid", {"A": 1.0, "X": 3.0})])
+@example(frozenset("XZ"), [("linear", {"X": 1.0}), ("linear", {"Y": 2.0, "X": 3.0}), ("linear", {"Z": 4.0})])
+def test_the_modal_states_plain_move_is_its_general_move(machine: frozenset[str],
+                                                         moves: list[tuple[str, dict[str, float | Expr]]]) -> None:
+    """``ModalStateSyntax``: a block that is only a move (and its number) is read by the run's ``MoveWords`` where
+    its words are X, Y and Z numbers on the machine (``_move``'s first branch); with another section beside it
+    (a comment: no modal change) it goes the general way. Both leave the same position, in the same order, the
+    same motion mode, and refuse the same blocks (an axis not on the machine) with the same message."""
+    from postproc.errors import ProgramError
+    from postproc.ir import Comments, Sequence
+    from postproc.syntaxes.modal_state import ModalStateSyntax
+
+    runs = []
+    for beside in (None, Sequence(7), Comments(["beside"])):
+        ctx = _ctx()
+        ctx.axis_words = machine
+        ctx.state.symbolic = any(isinstance(v, Expr) for _, given in moves for v in given.values())
+        syntax = ModalStateSyntax()
+        seen = []
+        for n, (mode, given) in enumerate(moves):
+            block = Block(n + 1, "", "\n")
+            block.sections = {"Motion": Motion(mode, dict(given))}
+            if beside is not None:
+                block.sections[beside.KEY] = beside
+            try:
+                syntax.build(block, ctx)
+                error = ""
+            except ProgramError as err:
+                error = str(err)
+            position = ctx.state.position
+            seen.append((list(position.items()), ctx.state.motion, error, "Motion" in block.sections))
+        runs.append(seen)
+    assert runs[0] == runs[2]
+    assert runs[1] == runs[2]

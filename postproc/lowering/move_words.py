@@ -6,99 +6,23 @@ takes the program: the frame evaluation (``postproc.frames.lowering``), the tool
 it needs the point (``cutter_point``: a copy's check, its one follower, read every move here). Each read
 the move's words from its dictionary, ~130 instructions a word compiled, and most of them wrote them into a
 dictionary of their own (``dict.update``, ~800). Here the words are read once for all of them, as native numbers
-(``MoveWords.read``: the same ``Motion`` read again by the next step costs a comparison), and a step notes them
-in native fields, brought into its dictionary only before something reads it (each step's ``settle``).
+(``MoveWords``, ``postproc.ir.move_words``: the reading's modal state reads each move first, and the same ``Motion``
+read again by a step costs a comparison), and a step notes them in native fields, brought into its dictionary only
+before something reads it (each step's ``settle``).
 
-A move that names another axis, or a word that is no ``float`` (a computed word, an ``int``), is not read here
+A move that names another axis, or a word that is no ``float`` (a computed word, an ``int``), is not read
 (``OTHER``): the steps take it their general way. A step notes the numbers in a ``NotedPoint`` (the one holder of
 the frame evaluation, the tool length timing and the arc pass); while its ``BlockStep.point`` is set, the lowering
 loop notes a straight move into it without calling the step (``lower.Walk.through``): one read and three stores
-a step, where a call, a look-up of the move and the step's own tests cost it ~400 instructions compiled. A read is keyed on the ``Motion`` and its dictionary, held
-here (so neither is freed and its address reused), and on the dictionary's size: a step that changes a move's
-words makes a new ``Motion`` (``tool_length_timing``, ``sideways_offsets``), as the steps after it must see.
+a step, where a call, a look-up of the move and the step's own tests cost it ~400 instructions compiled.
 """
 
 from __future__ import annotations
 
-from typing import Final
-
 from mypy_extensions import mypyc_attr
 
 from ..context import Context
-from ..ir import Motion
-from ..ir.expr import Expr
-
-X: Final = 1
-Y: Final = 2
-Z: Final = 4
-"""The bits of ``MoveWords.read``: the axes the move gives as numbers."""
-OTHER: Final = -1
-"""``MoveWords.read``: the move names another axis than X, Y and Z, or a word that is no ``float``."""
-
-KEY: Final = "lowering.move_words"
-"""``Context.run_data`` key of the run's ``MoveWords`` (``move_words``)."""
-
-
-@mypyc_attr(allow_interpreted_subclasses=True)
-class MoveWords:
-    """The last move read: its bits (``X``, ``Y``, ``Z``, or ``OTHER``) and its numbers (program units)."""
-
-    def __init__(self) -> None:
-        self.motion: Motion | None = None
-        self.axes: dict[str, float | Expr] | None = None
-        self.size = 0
-        self.bits = OTHER
-        self.x = 0.0
-        self.y = 0.0
-        self.z = 0.0
-
-    def read(self, motion: Motion) -> int:
-        """The bits of the axes ``motion`` gives, its numbers in ``x``, ``y``, ``z`` (``OTHER``: read it the
-        general way)."""
-        axes = motion.axes
-        if motion is self.motion and axes is self.axes and len(axes) == self.size:
-            return self.bits
-        size = len(axes)
-        bits = 0
-        found = 0  # (three looks by key: a loop over the items costs ~300 instructions a word compiled)
-        x = axes.get("X")
-        if x is not None:
-            if type(x) is not float:
-                return self._other(motion, axes, size)
-            self.x = float(x)
-            bits = X
-            found = 1
-        if found < size:
-            y = axes.get("Y")
-            if y is not None:
-                if type(y) is not float:
-                    return self._other(motion, axes, size)
-                self.y = float(y)
-                bits |= Y
-                found += 1
-        if found < size:
-            z = axes.get("Z")
-            if z is not None:
-                if type(z) is not float:
-                    return self._other(motion, axes, size)
-                self.z = float(z)
-                bits |= Z
-                found += 1
-        if found < size:
-            return self._other(motion, axes, size)  # another axis
-        self.motion = motion
-        self.axes = axes
-        self.size = size
-        self.bits = bits
-        return bits
-
-    def _other(self, motion: Motion, axes: dict[str, float | Expr], size: int) -> int:
-        """``read``'s answer for a move it does not read (``OTHER``), kept for the next step."""
-        self.motion = motion
-        self.axes = axes
-        self.size = size
-        self.bits = OTHER
-        return OTHER
+from ..ir.move_words import KEY as KEY, OTHER as OTHER, X as X, Y as Y, Z as Z, MoveWords as MoveWords, run_words
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -183,8 +107,6 @@ def moving(mode: str | None) -> bool:
 
 
 def move_words(ctx: Context) -> MoveWords:
-    """The run's ``MoveWords`` (one for all its steps: the second reader of a move finds it read)."""
-    words = ctx.run_data.get(KEY)
-    if not isinstance(words, MoveWords):
-        words = ctx.run_data[KEY] = MoveWords()
-    return words
+    """The run's ``MoveWords`` (one for all its steps, and the reading's modal state before them: the second reader
+    of a move finds it read)."""
+    return run_words(ctx.run_data)
