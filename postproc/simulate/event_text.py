@@ -326,12 +326,11 @@ _RECORD_KEYS: Final = _KeyTexts()
 def _record_into(record: MoveRecord, w: StringWriter, line_end: bool) -> None:
     """Write the JSON text of ``record`` (``MoveRecord.event()``'s, with its closing brace and, where ``line_end``,
     the line end): field by field, in the order ``event()`` gives its keys, with no look-up or type test of a key
-    (``tests/test_toolpath_numbers.py`` holds it to json's text of ``event()``). The controlled point's leading
-    values that are the programmed point's own objects (under a tool length alone, every axis but its Z: the
-    simulator keeps them, ``CompensatedMoves._offset_line``) have the same text, keys between them included: it is
-    copied from where the programmed point's was written, a character at a time (~15 instructions a character
-    compiled, where spelling a float again cost ~420 with its key; callgrind, branch tpwall3). The lists are walked
-    by ``zip`` (compiled, an item taken unchecked, where an index was a checked call, ~40 instructions)."""
+    (``tests/test_toolpath_numbers.py`` holds it to json's text of ``event()``). A controlled point's float that is
+    the programmed point's own object (under a tool length alone, its X and Y) is spelt again: copying its text from
+    where it was written, a character at a time (``w[k]``, ~35 instructions a character compiled, keys between
+    included), cost what it saved (callgrind, branch tpwall3). The lists are walked by ``zip`` (compiled, an item
+    taken unchecked, where an index was a checked call)."""
     texts = _RECORD_KEYS
     keys = record.keys
     if keys is not texts.keys:
@@ -340,28 +339,12 @@ def _record_into(record: MoveRecord, w: StringWriter, line_end: bool) -> None:
     _int_into(record.line, w)
     kind = record.kind
     w.write(texts.kind_text if kind is texts.kind else texts.kind_of(kind))
-    point = record.point
-    controlled = record.controlled
-    shared = 0  # the leading axes whose controlled value is the programmed value's object
-    if controlled is not None:
-        for value, same in zip(point, controlled):
-            if value is not same:
-                break
-            shared += 1
-    start: i64 = 0
-    end: i64 = 0  # where the text of the ``shared`` axes' values lies in ``w``, keys between them included
-    i = 0
-    for text, value in zip(texts.later, point):
+    for text, value in zip(texts.later, record.point):
         w.write(text)
-        if i == 0:
-            start = len(w)
         if isinstance(value, float):  # (most often: the float's own call, not through the union's)
             _float_into(value, w)
         else:
             _int_into(value, w)
-        i += 1
-        if i == shared:
-            end = len(w)
     centre = record.centre
     if centre is not None:  # an arc: its centre and plane
         centre_keys = record.centre_keys
@@ -373,6 +356,7 @@ def _record_into(record: MoveRecord, w: StringWriter, line_end: bool) -> None:
         w.write("null" if plane is None else _word_text(plane))
     f = record.f
     mode = record.feed_mode
+    controlled = record.controlled
     if f is not None:
         if f is not texts.f:  # (identity: the same object has the same text; an equal one is spelt again)
             texts.feed(f)
@@ -390,21 +374,12 @@ def _record_into(record: MoveRecord, w: StringWriter, line_end: bool) -> None:
             w.write("{}")
             w.write(_CLOSE_LINE if line_end else _CLOSE)
             return
-    i = 0
     for text, value in zip(texts.first, controlled):
-        if i == 0 or i >= shared:
-            w.write(text)
-        if i == 0 and shared:
-            k = start
-            while k < end:
-                w.append(w[k])
-                k += 1
-        if i >= shared:
-            if isinstance(value, float):
-                _float_into(value, w)
-            else:
-                _int_into(value, w)
-        i += 1
+        w.write(text)
+        if isinstance(value, float):
+            _float_into(value, w)
+        else:
+            _int_into(value, w)
     if ccentre is not None:
         centre_keys = record.centre_keys
         for i in range(len(centre_keys)):
