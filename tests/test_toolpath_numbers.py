@@ -143,11 +143,27 @@ def test_float_text_is_repr(value: float) -> None:
 @pytest.mark.parametrize("value", [1500.0, -7.0, 1e-4, -1e-4, 0.0001234, 999.999999, -999.999999, 1000.000001, 1000.5,
                                    -1000.0, 0.5, 0.001, 0.000001 + 12, 12.000100, 99999999.999999, -99999999.0,
                                    123.456, 123.4567, 1e8, 1e16, 9.999e-5, 2.5e-7])
-def test_float_text_is_repr_where_its_tables_meet(value: float) -> None:
-    """The pieces ``float_text`` takes from its tables (whole parts below 1000, the first three decimals,
-    the last three) at their edges, and integral floats (``repr`` adds ".0")."""
+def test_float_text_is_repr_where_its_digits_change(value: float) -> None:
+    """``float_text``'s digits (whole parts of one to eight digits, written three at a time from the right; the
+    decimals, trailing zeros dropped) at their edges, and integral floats (``repr`` adds ".0")."""
     assert float_text(value) == repr(value)
     assert float_text(num(value) * 1.0) == repr(num(value) * 1.0)
+
+
+WHOLES = [0, 1, 9, 10, 11, 99, 100, 101, 999, 1000, 1001, 1010, 9999, 10_000, 99_999, 100_000, 100_100, 999_999,
+          1_000_000, 1_002_003, 12_345_678, 99_999_999, 10**14, 10**15 - 1, 10**15, 10**18, 10**30]
+
+
+@pytest.mark.parametrize("whole", WHOLES)
+def test_whole_numbers_are_written_as_str_writes_them(whole: int) -> None:
+    """An int's digits (a line number, an integral coordinate or feed), written by ``event_text`` three at a time
+    from the right below 10**15 and by ``str`` above, at each count of digits and with zeros inside, both signs: a
+    record's and an event's text are json's."""
+    for value in (whole, -whole):
+        record = MoveRecord(whole, "feed", ("x", "y"), [value, value + 0.25], value, None, [value, whole / 1e6])
+        assert event_text(record, ENCODER) == _json(record.event())
+        event = {"line": whole, "x": value, "controlled": {"x": value}}
+        assert event_text(event, ENCODER) == _json(event)
 
 
 def _json(event: dict[object, object]) -> str:
