@@ -190,6 +190,7 @@ def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context, registry: 
         dry = Diagnostics(ErrorLevel.RAISE, max_errors=1_000_000, warn_stream=io.StringIO())
         trial = src.context(ctx.file, ctx.setup, dry)
         trial.state = copy.deepcopy(ctx.state)
+        trial.frame_run = copy.deepcopy(ctx.frame_run)  # the frame and position the run has reached (frames.lowering)
         trial.on_unsupported = "error"
         trial.run_data["sequences"] = Sequences(trial, src.NAME, dst, enabled=False)  # a dry run renders none
         trial.run_data[EVALUATE_KEY] = options.transform is not None

@@ -19,6 +19,7 @@ from .cycle_words import CycleWords
 from .errors import Diagnostics, Location
 from .ir import Block
 from .setup.machine_setup import MachineSetup
+from .ir.move_words import MoveWords
 from .ir.source_map import locate
 from .ir.state import ModalState
 
@@ -76,7 +77,7 @@ class Context:
                  "program_mode", "keep_check", "reader", "stops_before_motion", "feed_before_units", "cutter_rules", "length_at_axis", "path_at_start", "lathe_turret",
                  "run_data",
                  "point_mix", "lathe", "increments", "axis_words", "diameter", "one_block", "peck_clearance_mm", "moves_made",
-                 "block_lane", "hole_lane", "arc_end")
+                 "block_lane", "hole_lane", "arc_end", "move_words", "frame_run")
 
     def __init__(self, file: str, setup: MachineSetup, diagnostics: Diagnostics, dialect: str,
                  cycle_words: CycleWords | None = None) -> None:
@@ -150,6 +151,15 @@ class Context:
         self.hole_lane: HoleLane | None = None
         """The run's next-hole lane (``postproc.fast.reading``): the cycle resolver offers it a block that
         repeats the active cycle first."""
+        self.move_words = MoveWords()
+        """The run's reader of a plain move's X, Y and Z (``postproc.ir.move_words``): one for the reading's modal
+        state and the lowering steps that follow the point, so the second reader of a move finds it read. A slot,
+        not ``run_data``: found on every block (a look-up by key there cost ~140 instructions a block compiled)."""
+        self.frame_run: object | None = None
+        """What the frame evaluation has reached (``postproc.frames.run_state.FrameRun``, made by its first step;
+        None: no evaluation runs): the frame and the program position, which the frame parameters a program
+        reads are read from, and a translation's dry run starts from (``postproc.api`` copies it). A slot, not
+        ``state.extra``: that stays empty in most runs, so a step's test of it on every block finds nothing."""
 
     def at(self, block: Block, col: int = 1) -> Location:
         """Where ``block`` (column ``col``) is, through the source map: the one way to locate a block."""

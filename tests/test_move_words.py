@@ -15,7 +15,7 @@ from hypothesis import strategies as st
 from postproc.context import Context
 from postproc.errors import Diagnostics, ErrorLevel
 from postproc.frames.lowering import FrameEvaluator
-from postproc.frames.run_state import RUN_KEY, FrameRun
+from postproc.frames.run_state import FrameRun
 from postproc.ir import Block, Motion
 from postproc.ir.expr import Expr, Var
 from postproc.lowering.arcs import ArcOption, _Arcs
@@ -86,7 +86,7 @@ def _moves(moves: list[dict[str, float | Expr]]) -> list[Block]:
 def test_the_frame_evaluations_point_follows_every_move(moves: list[dict[str, float | Expr]]) -> None:
     ctx = _ctx()
     evaluator = FrameEvaluator(ctx)
-    run = ctx.state.extra[RUN_KEY]
+    run = ctx.frame_run
     assert isinstance(run, FrameRun)
     expected = dict(run.p)
     for block, given in zip(_moves(moves), moves):

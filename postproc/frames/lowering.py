@@ -29,7 +29,7 @@ another order than its text: there a frame command that may not run once where t
 would give, is an error, which the translation's dry run (``postproc.api``) takes as the reason to
 flatten the program instead; a computed word under a frame set before is carried as an expression
 (``X[#1*10.+100.]``). The dry run starts from the frame and position the real run has reached (kept in
-``ctx.state.extra[RUN_KEY]``).
+``ctx.frame_run``, which the dry run's context starts from a copy of).
 """
 
 from __future__ import annotations
@@ -55,7 +55,7 @@ from .affine import EXACT, INDEX, XYZ
 from .carried_arc import carried_arc, combination as _combination
 from .frame import PLANE_AXES, Frame, Position
 from .run_order import RunOrder
-from .run_state import RUN_KEY, FrameRun
+from .run_state import FrameRun
 from .section import FrameChange
 from .offset_changes import current_point_reads, data_setting
 from .commands import command, pending
@@ -92,13 +92,13 @@ class FrameEvaluator(BlockStep):
         """Mark a rewritten block changed (a writer regenerates it); the simulation, which writes nothing,
         keeps its text for the columns of its errors."""
         self.modal = ModalState()
-        extra = ctx.state.extra
-        run = extra.get(RUN_KEY)
+        run = ctx.frame_run
         if not isinstance(run, FrameRun):
             m = ctx.setup.machine
             start = {"X": m.start_x, "Y": m.start_y, "Z": m.start_z}
-            run = extra[RUN_KEY] = FrameRun(
-                {a: float(start.get(a, 0.0)) * (m.mm() if a in LINEAR else 1.0) for a in m.axes}, move_words(ctx))
+            run = FrameRun({a: float(start.get(a, 0.0)) * (m.mm() if a in LINEAR else 1.0) for a in m.axes},
+                           move_words(ctx))
+            ctx.frame_run = run
         if ctx.run_data.get("dry_run"):
             run.symbolic = True  # a dry run sees the part of the program that would be kept symbolically
             self.modal.units = ctx.state.units
@@ -231,7 +231,9 @@ class FrameEvaluator(BlockStep):
         current_point_reads(self, s)
 
     def targets(self, s: dict[str, Section]) -> None:
-        """The jump targets a block of the symbolic part carries (``RunOrder``)."""
+        """The jump targets a block of the symbolic part carries, and a subprogram's start (``RunOrder``)."""
+        if "ProgramStart" in s:
+            self.reached.order.subprogram()
         label = s.get("Label")
         sequence = s.get("Sequence")
         if label is not None or sequence is not None:

@@ -31,7 +31,7 @@ from ..context import Context
 from ..dialect import Dialect
 from ..errors import PostprocError, UnsupportedError
 from ..ir.expr import Expr
-from .run_state import RUN_KEY, FrameRun
+from .run_state import FrameRun
 from ..ir import Block, DataSetting, Motion, Section
 from ..ir.keys import watches_none
 from ..lowering.lower import BlockStep, LoweringStep, still_moving
@@ -135,7 +135,7 @@ class _Run:
         if self.offset is None:
             raise UnsupportedError(f"{setting.describe()}: the tool offset in force is not known here (a computed "
                                    "register, a negative or dynamic offset, or a register the set-up does not give)")
-        run = self.ctx.state.extra.get(RUN_KEY)
+        run = self.ctx.frame_run
         point = run.point() if isinstance(run, FrameRun) else {}
         values: dict[str, float | Expr] = {}
         for letter, value in setting.values.items():

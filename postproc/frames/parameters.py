@@ -2,7 +2,7 @@
 ``#5210``-``#5219``, a work system's offsets and rotation), as the frame evaluation has reached them.
 
 The interpreter runs ahead of the lowering by one block at most: the blocks stream, so when it evaluates a
-block, every block before it has been through ``evaluate_frames`` (``FrameRun`` in ``ctx.state.extra``).
+block, every block before it has been through ``evaluate_frames`` (``FrameRun``, ``ctx.frame_run``).
 Where no evaluation runs (a program translated back to its own dialect keeps its frame commands for the
 machine), or where the program has not set a value itself (a work offset from the set-up's table), the
 value is known only to the machine: ``None``, which the family's table reports by name.
@@ -27,7 +27,7 @@ from ..context import ASSUMED_START, Context
 from ..interp.numbers import COMPUTED, numbered_variables
 from ..ir.state import LEFT_START, MM_PER_INCH
 from ..ir import Block
-from .run_state import RUN_KEY, FrameRun
+from .run_state import FrameRun
 
 
 class FrameReadings:
@@ -39,7 +39,7 @@ class FrameReadings:
         self.ctx = ctx
 
     def _run(self) -> FrameRun | None:
-        run = self.ctx.state.extra.get(RUN_KEY)
+        run = self.ctx.frame_run
         return run if isinstance(run, FrameRun) else None
 
     def origin_applied(self) -> bool | None:

@@ -4,7 +4,9 @@ A program kept symbolically (its loops, jumps and calls written for a target tha
 order than its text, and the frame evaluation (``postproc.frames.lowering``) reads the text. A frame command
 is still evaluated exactly there when it runs once, where the text has it: outside every construct (no loop
 repeats it, no branch skips it, no subprogram holds it) and over no jump (no forward jump pending across it,
-no jump back to a target before it). ``RunOrder`` follows the constructs and jumps of the symbolic part and
+no jump back to a target before it), and before any call or subprogram (a subprogram's text is evaluated
+where the text has it, under the frame standing there: a frame command after a call, or after a subprogram's
+text, would stand in another order in the run). ``RunOrder`` follows the constructs and jumps of the symbolic part and
 says which frame command is such; a jump back found after a frame command it crosses is an error there (the
 translation's dry run then flattens the program). A jump whose target has not gone by is taken as forward
 (its target is pending until a block carries it); one to a target before the symbolic part (in the part that
@@ -14,8 +16,8 @@ streamed before the first construct) is not seen here.
 from __future__ import annotations
 
 from ..interp.control import (
-    Do, DoWhile, EndFor, EndIf, EndRepeat, EndSwitch, EndWhile, For, Goto, GotoLabel, If, Repeat, SubEnd, SubStart,
-    Switch, Until, While,
+    Call, Do, DoWhile, EndFor, EndIf, EndRepeat, EndSwitch, EndWhile, For, Goto, GotoLabel, If, ModalCall, Repeat,
+    SubEnd, SubStart, Switch, Until, While,
 )
 from ..errors import ProgramError
 from ..ir.expr import Num
@@ -23,12 +25,13 @@ from ..ir import Section
 
 _OPENING = (If, While, Do, For, Repeat, Switch, SubStart)
 _CLOSING = (EndIf, EndWhile, DoWhile, Until, EndFor, EndRepeat, EndSwitch, SubEnd)
+_CALLING = (Call, ModalCall, SubStart)
 
 
 class RunOrder:
     """The constructs open and the jumps pending in the symbolic part, and the frame commands it ran."""
 
-    __slots__ = ("depth", "pending", "seen", "commands")
+    __slots__ = ("depth", "pending", "seen", "commands", "called")
 
     def __init__(self) -> None:
         self.depth = 0
@@ -39,6 +42,12 @@ class RunOrder:
         """Target that went by -> how many frame commands had run then."""
         self.commands = 0
         """Frame commands evaluated in the symbolic part."""
+        self.called = False
+        """A call, or a subprogram's text, went by in the symbolic part: a frame command after it is refused (a
+        subprogram's moves are evaluated where its text stands, under the frame there: the frame of its calls only
+        while no frame command comes after either). [V: a Fanuc program that sets G52/G68/G51 in an ``M98``
+        subprogram moves after the ``M99`` under that frame; evaluated in the text's order, the moves after the call
+        came before the subprogram's text, and LinuxCNC ran them unshifted (``verify``: 92 mm, tests/test_frames.py).]"""
 
     def target(self, names: list[str]) -> None:
         """A block carrying the jump targets ``names`` (its label, ``N<number>``)."""
@@ -46,8 +55,15 @@ class RunOrder:
             self.pending.pop(name, None)
             self.seen[name] = self.commands
 
+    def subprogram(self) -> None:
+        """A program's start (a Fanuc ``O`` number) in the symbolic part: a subprogram's text (``called``)."""
+        self.called = True
+
     def control(self, section: Section, symbolic_error: str) -> None:
-        """A control statement: constructs open and close, a jump waits for its target or goes back."""
+        """A control statement: constructs open and close, a jump waits for its target or goes back, a call or a
+        subprogram's definition is noted (``called``)."""
+        if isinstance(section, _CALLING):
+            self.called = True
         if isinstance(section, _OPENING):
             self.depth += 1
         elif isinstance(section, _CLOSING):
@@ -65,7 +81,7 @@ class RunOrder:
 
     def command(self, symbolic_error: str) -> None:
         """A frame command: refused unless it runs once, where the text has it."""
-        if self.depth or self.pending:
+        if self.depth or self.pending or self.called:
             raise ProgramError(symbolic_error)
         self.commands += 1
 

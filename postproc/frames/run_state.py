@@ -4,8 +4,6 @@ entries) and the evaluator's own modules (``commands``, ``offset_changes``) depe
 
 from __future__ import annotations
 
-from typing import Final
-
 from mypy_extensions import mypyc_attr
 
 from ..compensation.tool_length import ToolLength
@@ -13,13 +11,10 @@ from ..lowering.move_words import MoveWords, NotedPoint
 from .frame import Frame, Position
 from .run_order import RunOrder
 
-RUN_KEY: Final = "frames.run"
-"""``ctx.state.extra`` key of the frame and program position the lowering has reached (``FrameRun``)."""
-
-
 @mypyc_attr(allow_interpreted_subclasses=True)
 class FrameRun:
-    """What the evaluation has reached: copied with the reading state into a translation's dry run."""
+    """What the evaluation has reached (``Context.frame_run``): copied into a translation's dry run, which starts from
+    the reading state and the frame where the program stands (``postproc.api``)."""
 
     __slots__ = ("frame", "p", "g5x", "symbolic", "work", "order", "unsettled", "scale", "cutter", "tools", "sideways",
                  "tools_known", "table_known", "notes")

@@ -14,7 +14,7 @@ on the dictionary's size: a step that changes a move's words makes a new ``Motio
 
 from __future__ import annotations
 
-from typing import Any, Final
+from typing import Final
 
 from mypy_extensions import mypyc_attr
 
@@ -28,13 +28,10 @@ Z: Final = 4
 OTHER: Final = -1
 """``MoveWords.read``: the move names another axis than X, Y and Z, or a word that is no ``float``."""
 
-KEY: Final = "lowering.move_words"
-"""``Context.run_data`` key of the run's ``MoveWords`` (``run_words``)."""
-
-
 @mypyc_attr(allow_interpreted_subclasses=True)
 class MoveWords:
-    """The last move read: its bits (``X``, ``Y``, ``Z``, or ``OTHER``) and its numbers (program units)."""
+    """The last move read: its bits (``X``, ``Y``, ``Z``, or ``OTHER``) and its numbers (program units). One a run
+    (``Context.move_words``), for all its readers: the second reader of a move finds it read."""
 
     def __init__(self) -> None:
         self.motion: Motion | None = None
@@ -114,11 +111,3 @@ class MoveWords:
                 (Z if "Z" in machine else 0)
         return self.machine_bits
 
-
-def run_words(run_data: dict[str, Any]) -> MoveWords:
-    """The run's ``MoveWords`` (``run_data``: ``Context.run_data``; one for all its readers: the second reader of a
-    move finds it read)."""
-    words = run_data.get(KEY)
-    if not isinstance(words, MoveWords):
-        words = run_data[KEY] = MoveWords()
-    return words

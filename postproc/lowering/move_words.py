@@ -22,7 +22,7 @@ from __future__ import annotations
 from mypy_extensions import mypyc_attr
 
 from ..context import Context
-from ..ir.move_words import KEY as KEY, OTHER as OTHER, X as X, Y as Y, Z as Z, MoveWords as MoveWords, run_words
+from ..ir.move_words import OTHER as OTHER, X as X, Y as Y, Z as Z, MoveWords as MoveWords
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -108,5 +108,5 @@ def moving(mode: str | None) -> bool:
 
 def move_words(ctx: Context) -> MoveWords:
     """The run's ``MoveWords`` (one for all its steps, and the reading's modal state before them: the second reader
-    of a move finds it read)."""
-    return run_words(ctx.run_data)
+    of a move finds it read: ``Context.move_words``)."""
+    return ctx.move_words

@@ -25,7 +25,7 @@ from postproc.ir.event_order import MOVING, after_motion
 from postproc.geometry.arcs import ARC_TOLERANCE_MM, PLACES
 from postproc.ir.expr import Expr
 from postproc.ir import Block, Motion
-from postproc.ir.move_words import X, Y, Z, run_words
+from postproc.ir.move_words import X, Y, Z
 from postproc.ir.state import (LEFT_START, MM_PER_INCH, MODAL_KEYS, PLACED_AXES, PLACED_LENGTH_AXIS, PLANE_AXES,
                                 ModalState, SetUpPlaces)
 from postproc.context import Context
@@ -95,7 +95,7 @@ class ModalStateSyntax(Syntax):
             # compiled. Stored axis by axis (``dict.update`` cost ~870 instructions a block, three stores ~620): the
             # position holds X, Y and Z from the start (``ModalState``) and never loses them, so its order is the
             # same whatever the order of the stores. Any other move goes the general way below.
-            reader = run_words(ctx.run_data)
+            reader = ctx.move_words
             bits = reader.read(motion)
             if bits >= 0 and bits & reader.on(words) == bits:
                 store = cast("dict[str, object]", state.position)
