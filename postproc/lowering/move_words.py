@@ -100,6 +100,16 @@ class NotedPoint:
             position["Z"] = self.z
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
+class PassedPoint(NotedPoint):
+    """The ``BlockStep.point`` of a step that reads no point: a straight move alone in its block leaves the step as it
+    is, so the loop passes it as a noted point's step, and nothing is noted (``postproc.rs274.lean_controller.passed``:
+    a note nothing read cost ~55 instructions a block compiled, every grbl and grblHAL translation)."""
+
+    def note(self, words: MoveWords, bits: int) -> None:
+        return
+
+
 def moving(mode: str | None) -> bool:
     """``mode`` is a straight move or an arc (rapid, linear, cw, ccw): four comparisons of the commonest first,
     cheaper compiled than a frozenset's ``in`` (~75 instructions), asked by the steps of every plain move."""

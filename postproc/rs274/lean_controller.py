@@ -41,7 +41,7 @@ from ..ir.state import PLANE_AXES
 from .order_of_execution import split_stops_after_motion, stops_after_motion
 from ..lowering.expansion_items import expansion_items
 from ..lowering.lower import BlockStep, LoweringStep
-from ..lowering.move_words import NotedPoint, move_words
+from ..lowering.move_words import NotedPoint, PassedPoint, move_words
 
 
 def pause_for_tool_change(blocks: Iterator[Block], ctx: Context, target: type[Dialect]) -> Iterator[Block]:
@@ -178,8 +178,8 @@ def passed(ctx: Context) -> NotedPoint:
     (``_Lean``, ``_CloseFullCircles``: only an arc may be a full circle to close): the lowering loop notes such a
     move of X, Y and Z numbers there, read once for all the steps that follow the point, instead of calling the
     step's ``take_move`` (which looked at it to give None: ~280 instructions a block compiled, every grbl and
-    grblHAL translation, callgrind). Nothing reads what is noted there."""
-    return NotedPoint(move_words(ctx))
+    grblHAL translation, callgrind). Nothing reads what is noted there: nothing is (``PassedPoint``)."""
+    return PassedPoint(move_words(ctx))
 
 
 _EXPANSION_ONLY: Final = frozenset(("CompoundMotion", "Sequence", "Comments"))
