@@ -4,13 +4,13 @@ A program kept symbolically (its loops, jumps and calls written for a target tha
 order than its text, and the frame evaluation (``postproc.frames.lowering``) reads the text. A frame command
 is still evaluated exactly there when it runs once, where the text has it: outside every construct (no loop
 repeats it, no branch skips it, no subprogram holds it) and over no jump (no forward jump pending across it,
-no jump back to a target before it), and before any call or subprogram (a subprogram's text is evaluated
-where the text has it, under the frame standing there: a frame command after a call, or after a subprogram's
-text, would stand in another order in the run). ``RunOrder`` follows the constructs and jumps of the symbolic part and
-says which frame command is such; a jump back found after a frame command it crosses is an error there (the
-translation's dry run then flattens the program). A jump whose target has not gone by is taken as forward
-(its target is pending until a block carries it); one to a target before the symbolic part (in the part that
-streamed before the first construct) is not seen here.
+no jump back to a target before it), and after no call and no subprogram's text (a subprogram's text is
+evaluated where the text has it, under the frame standing there: a frame command after a call, or after a
+subprogram's text, would stand in another order in the run). ``RunOrder`` follows the constructs, jumps and
+calls of the symbolic part and says which frame command is such; a jump back found after a frame command it
+crosses is an error there (the translation's dry run then flattens the program). A jump whose target has not
+gone by is taken as forward (its target is pending until a block carries it); one to a target before the
+symbolic part (in the part that streamed before the first construct) is not seen here.
 """
 
 from __future__ import annotations
@@ -45,9 +45,9 @@ class RunOrder:
         self.called = False
         """A call, or a subprogram's text, went by in the symbolic part: a frame command after it is refused (a
         subprogram's moves are evaluated where its text stands, under the frame there: the frame of its calls only
-        while no frame command comes after either). [V: a Fanuc program that sets G52/G68/G51 in an ``M98``
-        subprogram moves after the ``M99`` under that frame; evaluated in the text's order, the moves after the call
-        came before the subprogram's text, and LinuxCNC ran them unshifted (``verify``: 92 mm, tests/test_frames.py).]"""
+        while no frame command comes after either). A G52, G68 or G51 set in an ``M98`` subprogram stays in force
+        after its ``M99`` [K: modal codes, Fanuc 0i-MF operator's manual]: evaluated in the text's order, the moves
+        after the call came before the subprogram's text and went out unshifted (tests/test_frames_in_calls.py)."""
 
     def target(self, names: list[str]) -> None:
         """A block carrying the jump targets ``names`` (its label, ``N<number>``)."""
