@@ -57,11 +57,11 @@ NUMBERS_KEY: Final = "canonical_line.numbers"
 class LineNumbers:
     """The numbers of the line ``scan_marks`` left unmade last in a run (``text``, None before the first or
     while a scan is under way): each axis-type word's value, as the scan read it, by the word's place in the
-    line's ``Block.marks``, and its block number. The reader's scan fills it, and the plain-block lane (``postproc.fast.plain``),
-    which reads the block from its marks, takes the values from it instead of reading each number again; a
-    block whose line is not the one held (another line was scanned since) is scanned again for them. One per
-    run (``line_numbers``): a run is read in one thread, and the scan and the lane meet here without a field of
-    the block."""
+    line's ``Block.marks``, and its block number. The reader's scan fills it, and the plain-block lane
+    (``postproc.fast.plain``), which reads the block from its marks, takes the values from it instead of reading
+    each number again; a block whose line is not the one held (a step read ahead) is scanned again for them. One
+    per run (``line_numbers``): a run is read in one thread, and the scan and the lane meet here without a field
+    of the block."""
 
     __slots__ = ("text", "sequence", "v0", "v1", "v2", "v3", "v4", "v5")
 
