@@ -59,7 +59,7 @@ _O_WORDS: Final = "O-words (subprograms, loops, conditions) are not supported by
 def lex_block(file: str, number: int, text: str, eol: str, dialect: str,
               oword: OwordParser | None = None, calls: Callable[[Block, str], None] | None = None,
               ignore_slash: Callable[[Location], None] | None = None, polar: bool = False,
-              max_number: int = 0) -> Block:
+              max_number: int = 0, data: bytes = b"", at: int = 0) -> Block:
     """Lex one line into a block: words as written (letter case kept), comments, block delete, and
     with ``oword`` (the file's ``OwordParser``) o-words, assignments and expression values.
 
@@ -71,13 +71,14 @@ def lex_block(file: str, number: int, text: str, eol: str, dialect: str,
     With ``polar`` (LinuxCNC), ``@`` (polar radius) and ``^`` (polar angle) are addresses too, read as
     rs274's ``read_atsign``/``read_carat`` read them (a real value); the dialect's pipeline gives them
     their meaning. ``max_number`` (not 0): a larger block number is refused, as the controller refuses
-    its line (``NgcReader.MAX_BLOCK_NUMBER``).
+    its line (``NgcReader.MAX_BLOCK_NUMBER``). ``data``: ASCII bytes that hold the line's at ``at`` (the line
+    check's copy of its piece: ``plain_words``).
     """
     block = Block(number, text, eol)
     code = text
     # Likeliest first: a line of words only, which holds no comment and no '/' (``plain_words`` refuses both), so
     # that none is looked for; any other line has its comments and '/' taken out first, and its words read then.
-    words = plain_words(code)
+    words = plain_words(code, data, at)
     if words is None:
         if "(" in code or ")" in code or ";" in code:
             code = strip_comments(file, block, code)
@@ -121,19 +122,28 @@ def lex_block(file: str, number: int, text: str, eol: str, dialect: str,
     return block
 
 
-def plain_words(code: str) -> list[tuple[str, str]] | None:
+def plain_words(code: str, data: bytes = b"", at: int = 0) -> list[tuple[str, str]] | None:
     """The words of a line of words only, as ``_WORD.findall`` finds them where ``_WORDS_ONLY`` matches the
     whole line; None where it does not, and for any line that is not ASCII (``\\d`` is any Unicode digit:
     the regexes read those). One pass over the line's bytes: compiled, about a tenth of the two regexes
     (the LinuxCNC reading spent ~20k instructions a line in them). ``tests/test_ngc_plain_words.py``
-    holds it to the regexes on random lines."""
-    try:
-        b = code.encode("ascii")  # compiled, a C call
-    except UnicodeEncodeError:
-        return None
-    n = len(b)
+    holds it to the regexes on random lines. ``data``: ASCII bytes that hold the line's at ``at`` (the line
+    check's copy of its piece, ``postproc.syntaxes.lines.CheckedLines.runs``), read instead of a copy of the line
+    made here (~150 instructions a line)."""
+    # Positions are the bytes' (``base`` the line's first): a word's letter and number are cut from the line at
+    # their position less ``base``.
+    if len(data) > 0:  # (compiled, a length read; ``if data`` is a call)
+        b = data
+        base = at
+    else:
+        try:
+            b = code.encode("ascii")  # compiled, a C call
+        except UnicodeEncodeError:
+            return None
+        base = 0
+    n = base + len(code)
     words: list[tuple[str, str]] = []
-    i = 0
+    i = base
     while True:
         while i < n and (b[i] == 32 or b[i] == 9):  # ' ', '\t'
             i += 1
@@ -166,7 +176,7 @@ def plain_words(code: str) -> list[tuple[str, str]] | None:
                 return None
         else:
             return None
-        words.append((code[start], code[number:i]))
+        words.append((code[start - base], code[number - base:i - base]))
 
 
 def strip_comments(file: str, block: Block, code: str) -> str:
@@ -375,17 +385,22 @@ class NgcReader(Reader):
         number = 0
         # Checked lines come in runs (``postproc.syntaxes.lines.line_runs``, as the ISO family's Fanuc reader takes
         # them): mostly many texts already split from the end they share (a line cut from its end cost ~400
-        # instructions); other lines come with their ends, each split natively (the generator ``split_lines``
-        # cost ~3.5k instructions a line).
-        for texts, end, _ in line_runs(lines):
+        # instructions), with the line check's ASCII copy of their piece (``data``: each line's bytes at ``at``, which
+        # the word scan reads); other lines come with their ends, each split natively (the generator
+        # ``split_lines`` cost ~3.5k instructions a line).
+        for texts, end, data in line_runs(lines):
+            at = 0
             for raw in texts:
                 number += 1
                 if end is None:
                     text, eol = split_line(raw)
                 else:
                     text, eol = raw, end
+                start = at
+                at += len(text) + len(eol)
                 try:
-                    block = lex_block(file, number, text, eol, dialect, oword, calls, ignore_slash, polar, max_number)
+                    block = lex_block(file, number, text, eol, dialect, oword, calls, ignore_slash, polar, max_number,
+                                      data, start)
                 except PostprocError as err:
                     report(err, text)
                     yield Block(number, text, eol)
