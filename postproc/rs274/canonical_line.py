@@ -155,10 +155,11 @@ def _scan(text: str, keep: bool, data: bytes, at: i64,
     # the line check's ASCII copy of the piece where the reader has it (``data``), else from a copy of the line.
     # Positions as i64 (compiled: machine integers, not tagged ones whose every step checks for overflow);
     # digits and blanks told by comparisons (a table look-up is a second index, with its own checks).
-    # A number's digits are summed as they pass (``mantissa``, a float: exact for up to ``DECIMAL_DIGITS``
-    # digits, and never an overflow); where the line is left unmade, its axis-type words' values are kept from
-    # them (``numbers``), ``decimal_value``'s exact quotient (``tests/test_canonical_line.py`` compares them bit
-    # for bit with ``float``).
+    # A number's digits are summed as they pass (``mantissa``, a machine integer: three instructions a digit);
+    # where the line is left unmade, its axis-type words' values are kept from them (``numbers``),
+    # ``decimal_value``'s exact quotient of at most ``DECIMAL_DIGITS`` digits, ``decimal_value`` itself for more
+    # (whose sum, past 18 digits, is not used: it wraps compiled); ``tests/test_canonical_line.py`` compares them
+    # bit for bit with ``float``.
     if numbers is not None:
         numbers.text = None  # (what it holds is no longer a line's until this scan ends)
     if data:
@@ -219,7 +220,7 @@ def _scan(text: str, keep: bool, data: bytes, at: i64,
         digits = i
         lead = ch  # the number's first character
         first_n = (c == 78 or c == 110) and count == 0  # 'N', 'n' first: its number is the block's
-        mantissa = 0.0  # the number's digits (not a block number's), whole and places, as one integer
+        mantissa: i64 = 0  # the number's digits (not a block number's), whole and places, as one integer
         if first_n:
             number: i64 = 0  # (a machine integer: no checked multiplication a digit; summed up to 18 digits)
             while 48 <= ch <= 57:
@@ -232,7 +233,7 @@ def _scan(text: str, keep: bool, data: bytes, at: i64,
                 sequence = int(text[digits:i])
         else:
             while 48 <= ch <= 57:
-                mantissa = mantissa * 10.0 + float(ch - 48)
+                mantissa = mantissa * 10 + (ch - 48)
                 i += 1
                 ch = b[base + i] if i < n else -1
         whole = i - digits
@@ -245,7 +246,7 @@ def _scan(text: str, keep: bool, data: bytes, at: i64,
             scale = 1.0  # ten to the places (exact: a value is kept from at most DECIMAL_DIGITS digits)
             while 48 <= ch <= 57:
                 final = ch
-                mantissa = mantissa * 10.0 + float(ch - 48)
+                mantissa = mantissa * 10 + (ch - 48)
                 scale = scale * 10.0
                 i += 1
                 ch = b[base + i] if i < n else -1
@@ -262,7 +263,7 @@ def _scan(text: str, keep: bool, data: bytes, at: i64,
                 if whole + places > DECIMAL_DIGITS:
                     value = decimal_value(text[start:i])
                 else:
-                    value = mantissa / scale
+                    value = float(mantissa) / scale
                     if negative:
                         value = -value
                 numbers.put(count, value)
