@@ -162,7 +162,7 @@ def _scan(text: str, keep: bool, data: bytes, at: i64,
     # bit for bit with ``float``.
     if numbers is not None:
         numbers.text = None  # (what it holds is no longer a line's until this scan ends)
-    if data:
+    if len(data) > 0:  # (compiled, a length read; ``if data`` is a call, ~30 instructions)
         b = data
         base = at
     else:

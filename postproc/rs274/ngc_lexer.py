@@ -24,7 +24,7 @@ Line splitting and the word number syntax are the ISO lexer's. ``NgcReader`` is 
 
 from __future__ import annotations
 
-from mypy_extensions import mypyc_attr
+from mypy_extensions import i64, mypyc_attr
 
 import re
 from typing import Callable, ClassVar, Final, Iterable, Iterator
@@ -59,7 +59,7 @@ _O_WORDS: Final = "O-words (subprograms, loops, conditions) are not supported by
 def lex_block(file: str, number: int, text: str, eol: str, dialect: str,
               oword: OwordParser | None = None, calls: Callable[[Block, str], None] | None = None,
               ignore_slash: Callable[[Location], None] | None = None, polar: bool = False,
-              max_number: int = 0, data: bytes = b"", at: int = 0) -> Block:
+              max_number: int = 0, data: bytes = b"", at: i64 = 0) -> Block:
     """Lex one line into a block: words as written (letter case kept), comments, block delete, and
     with ``oword`` (the file's ``OwordParser``) o-words, assignments and expression values.
 
@@ -122,7 +122,7 @@ def lex_block(file: str, number: int, text: str, eol: str, dialect: str,
     return block
 
 
-def plain_words(code: str, data: bytes = b"", at: int = 0) -> list[tuple[str, str]] | None:
+def plain_words(code: str, data: bytes = b"", at: i64 = 0) -> list[tuple[str, str]] | None:
     """The words of a line of words only, as ``_WORD.findall`` finds them where ``_WORDS_ONLY`` matches the
     whole line; None where it does not, and for any line that is not ASCII (``\\d`` is any Unicode digit:
     the regexes read those). One pass over the line's bytes: compiled, about a tenth of the two regexes
@@ -131,7 +131,9 @@ def plain_words(code: str, data: bytes = b"", at: int = 0) -> list[tuple[str, st
     check's copy of its piece, ``postproc.syntaxes.lines.CheckedLines.runs``), read instead of a copy of the line
     made here (~150 instructions a line)."""
     # Positions are the bytes' (``base`` the line's first): a word's letter and number are cut from the line at
-    # their position less ``base``.
+    # their position less ``base``. Positions as i64 (compiled: machine integers; a tagged end that is a sum may be
+    # a long one, and every comparison with it took the slow call: ~400 instructions a line).
+    base: i64 = 0
     if len(data) > 0:  # (compiled, a length read; ``if data`` is a call)
         b = data
         base = at
@@ -140,10 +142,9 @@ def plain_words(code: str, data: bytes = b"", at: int = 0) -> list[tuple[str, st
             b = code.encode("ascii")  # compiled, a C call
         except UnicodeEncodeError:
             return None
-        base = 0
-    n = base + len(code)
+    n: i64 = base + len(code)
     words: list[tuple[str, str]] = []
-    i = base
+    i: i64 = base
     while True:
         while i < n and (b[i] == 32 or b[i] == 9):  # ' ', '\t'
             i += 1
@@ -389,7 +390,7 @@ class NgcReader(Reader):
         # the word scan reads); other lines come with their ends, each split natively (the generator
         # ``split_lines`` cost ~3.5k instructions a line).
         for texts, end, data in line_runs(lines):
-            at = 0
+            at: i64 = 0
             for raw in texts:
                 number += 1
                 if end is None:
