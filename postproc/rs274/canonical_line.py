@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from typing import Any, Final
 
-from mypy_extensions import i64
+from mypy_extensions import i64, mypyc_attr
 
 from ..ir.block import MARK_BITS, MARK_MASK, MARK_WORDS
 from ..numbers import DECIMAL_DIGITS, decimal_value
@@ -54,6 +54,7 @@ NUMBERS_KEY: Final = "canonical_line.numbers"
 """``Context.run_data`` key: the run's ``LineNumbers`` (``line_numbers``)."""
 
 
+@mypyc_attr(allow_interpreted_subclasses=True)
 class LineNumbers:
     """The numbers of the line ``scan_marks`` left unmade last in a run (``text``, None before the first or
     while a scan is under way): each axis-type word's value, as the scan read it, by the word's place in the
