@@ -8,11 +8,12 @@ the compiled scan is checked too."""
 
 from __future__ import annotations
 
-from hypothesis import given, settings, strategies as st
+from hypothesis import example, given, settings, strategies as st
 
 from postproc.ir.block import MARK_WORDS, Block, marked_words
 from postproc.numbers import CANONICAL_BLOCK
-from postproc.rs274.canonical_line import CANONICAL, CODES, LEXED, NO_WORDS, WORDS, scan_marks, scan_words
+from postproc.rs274.canonical_line import (CANONICAL, CODES, LEXED, NO_WORDS, WORDS, LineNumbers, line_numbers,
+                                           scan_marks, scan_words)
 from postproc.rs274.lexer import WORD, WORDS_ONLY
 
 _LETTERS = "XYZABCUVWIJKRQFGMNOTHDLPSExgnmo(#:%/"
@@ -165,3 +166,64 @@ def test_the_scan_of_a_line_read_from_its_pieces_bytes_is_the_scan_of_the_line(b
     if (before + line + after).isascii():
         data = (before + "\n" + line + "\n" + after).encode("ascii")
         assert scan_marks(line, data, len(before) + 1) == scan_marks(line)
+
+
+_decimal = st.builds(
+    lambda sign, zeros, whole, frac: sign + zeros + whole + "." + frac,
+    st.sampled_from(["", "-", "+"]),
+    st.sampled_from(["", "", "0", "000"]),
+    st.text("0123456789", max_size=16),
+    st.text("0123456789", max_size=16),
+).filter(lambda num: any(c.isdigit() for c in num))
+
+
+@settings(max_examples=2000)
+@given(_decimal, st.sampled_from(["", "N10 ", "G1 X1. "]), st.sampled_from("XYZIJRF"))
+@example("5.", "", "X")
+@example(".5", "", "X")
+@example("-.5", "", "X")
+@example("+0005.50", "", "X")
+@example("-0.", "", "X")
+@example("123456789012345.", "", "X")  # 15 digits: summed
+@example("1234567890123456.7", "", "X")  # 17: by ``decimal_value``
+@example("9007199254740993.", "", "X")  # 2**53 + 1: no float holds it
+@example("0.000000000000000000001", "", "X")
+@example("-99999999999999999999999999.9999", "G1 X1. ", "Y")
+def test_the_scans_values_are_floats_bit_for_bit(num: str, before: str, letter: str) -> None:
+    """The value the scan reads of an axis-type number with a decimal point as it passes its digits (what it leaves in
+    ``LineNumbers`` for the plain-block lane) is ``float``'s, bit for bit, for any spelling: signs, leading and
+    trailing zeros, ``.5``, ``5.``, and more digits than a float holds. Where the line is canonical, it is held
+    for that line, under its words' places, with its block number."""
+    line = f"{before}{letter}{num} Z2."
+    numbers = LineNumbers()
+    kind, _, sequence, marks = scan_marks(line, numbers=numbers)
+    index = before.count(" ")
+    assert numbers.value(index).hex() == float(num).hex()
+    assert numbers.value(index + 1) == 2.0
+    if marks:
+        assert numbers.text is line and numbers.sequence == sequence
+        if before == "G1 X1. ":
+            assert numbers.value(1) == 1.0
+    else:
+        assert numbers.text is None
+        assert not kind & CANONICAL or len(line) > 255
+
+
+def test_a_line_not_left_unmade_leaves_no_numbers() -> None:
+    """The numbers held are a line's only while it is the last scanned unmade: a scan that makes its words (a line
+    not canonical, or refused) holds none, so a lane never takes another line's values for it."""
+    numbers = LineNumbers()
+    first = "N10 G1 X1.5 Y-2."
+    assert scan_marks(first, numbers=numbers)[3] and numbers.text is first and numbers.sequence == 10
+    assert (numbers.value(2), numbers.value(3)) == (1.5, -2.0)
+    for line in ("N20 X1.50", "X1. Y2. Z3. A4. B5. C6. U7.", "X", "G1 X1.5 (A)", "N30 X1.5 Y-2."):
+        scan_marks(line, numbers=numbers)
+        assert numbers.text is (line if line == "N30 X1.5 Y-2." else None)
+    assert scan_words(first)[2] == 10 and numbers.text is not first  # (the words' scan holds nothing)
+
+
+def test_a_run_holds_one_line_numbers() -> None:
+    """The reader and the lane of a run ask for its ``LineNumbers`` (``Context.run_data``) and get the same."""
+    run_data: dict[str, object] = {}
+    numbers = line_numbers(run_data)
+    assert line_numbers(run_data) is numbers and line_numbers({}) is not numbers

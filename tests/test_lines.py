@@ -405,3 +405,27 @@ def test_the_fanuc_reader_reads_runs_as_it_reads_lines(lines, cam, end, tail):
         got.append(([(b.line, b.text, b.eol, b.words, b.values, b.sections, b.canonical) for b in blocks],
                     [str(w) for w in ctx.diagnostics.warnings]))
     assert got[0] == got[1]
+
+
+@pytest.mark.parametrize("dialect", ["linuxcnc", "grbl"])
+@given(lines=_RUN_LINES, ngc=st.lists(st.sampled_from(["N10 G1 X1. Y2.", "G0 X 1 0", "(PASS 1)", "G1 X1. (A) Y2.", "%",
+                                                       "o100 sub", "#1=2.", "X[#1*2]", "/G1 X3.", "G1 X1/2", "M2",
+                                                       "m30", "; note", "N7 X-0. F100.", "", "N1.5", "O12"]),
+                                       max_size=30), end=st.sampled_from(["\n", "\r\n"]), tail=st.booleans())
+@settings(max_examples=100, deadline=None)
+def test_the_ngc_readers_read_runs_as_they_read_lines(dialect, lines, ngc, end, tail):
+    # the RS274/NGC readers, as the Fanuc reader, read the runs of checked lines (texts split from their end) and
+    # lines with their ends into the same blocks, warnings and errors
+    from postproc.context import Context
+    from postproc.errors import Diagnostics, ErrorLevel
+    import postproc.syntaxes.lines
+    reader = default_registry().dialect(dialect).READER
+    program = "".join(line + end for line in ngc + lines) + ("G1 X5." if tail else "")
+    got = []
+    for runs in (True, False):
+        ctx = Context("p.ngc", MachineSetup(), Diagnostics(ErrorLevel.WARN, warn_stream=io.StringIO()), dialect)
+        checked = postproc.syntaxes.lines.checked_lines(io.StringIO(program, newline=""), ctx)
+        blocks = list(reader(ctx).read(checked if runs else list(checked)))
+        got.append(([(b.line, b.text, b.eol, b.words, b.values, b.sections) for b in blocks],
+                    [str(w) for w in ctx.diagnostics.warnings], [str(e) for e in ctx.diagnostics.errors]))
+    assert got[0] == got[1]

@@ -47,3 +47,13 @@ def test_plain_words_reads_lines_as_written(code: str, words: list[tuple[str, st
 def test_a_line_with_unicode_digits_is_read_by_the_slow_path_as_the_regexes_read_it() -> None:
     block = lex_block("t.ngc", 1, "G1 X\u0661\u0662", "\n", "linuxcnc")
     assert block.words == [("G", "1"), ("X", "\u0661\u0662")]
+
+
+@settings(max_examples=1000, deadline=None)
+@given(before=LINES, code=LINES, after=LINES)
+def test_plain_words_read_from_the_pieces_bytes_are_the_lines(before: str, code: str, after: str) -> None:
+    # the NGC readers' scan reads a line's bytes where the line check's ASCII copy of its piece holds them
+    # (``plain_words(code, data, at)``, a run's lines): the same words as the line's own
+    if (before + code + after).isascii():
+        data = (before + "\n" + code + "\n" + after).encode("ascii")
+        assert plain_words(code, data, len(before) + 1) == plain_words(code)

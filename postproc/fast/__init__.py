@@ -10,7 +10,8 @@ property test. A plugin declares nothing for it.
   ``tests/test_straight_moves.py``.
 * ``reading``: the reading lanes (``install_reading``), ``plain``: the plain-block lane of the block syntax
   (``read``, and ``read_marked`` for a canonical line whose words the Fanuc reader left unmade, ``Block.marks``,
-  read where they stand in it) and ``plain_ngc`` the RS274/NGC one (``tests/test_plain_blocks.py``), ``holes``: the next-hole lane of the
+  read where they stand in it, their numbers as the reader's scan read them: ``canonical_line.LineNumbers``) and
+  ``plain_ngc`` the RS274/NGC one (``tests/test_plain_blocks.py``), ``holes``: the next-hole lane of the
   cycle resolver (``tests/test_cycle_repeat.py``).
 * ``expansion_moves``: the expansion-move lane (``install_expansion``), an expanded cycle's straight moves
   written without the writer's item dispatch (``tests/test_expansion_moves.py``).
@@ -36,9 +37,9 @@ the one algorithm or has gone, so the reading has one path, compiled or pure.
   (``line_problem``): the chunk test is a sufficient condition for ``line_problem`` finding nothing, not a
   second check, so it never decides a line is wrong; ``tests/test_lines.py`` holds the two to the same lines
   and errors on random chunks, as it holds a stream read many lines at once to the same stream read a line
-  at a time. Its lines come as runs too (``CheckedLines.runs``, what the Fanuc reader reads): a stream's piece
-  of lines that all end alike as their texts, split from that end by one ``str.split``, and any other lines
-  with their ends, which the reader splits itself. That is the one way the reader reads, not a lane: the same
-  lines split where they were split before (``tests/test_lines.py`` holds runs to the lines with their ends,
-  and the reader's blocks read from runs to those read from lines, on random programs).
+  at a time. Its lines come as runs too (``CheckedLines.runs``, what the Fanuc and RS274/NGC readers read): a
+  stream's piece of lines that all end alike as their texts, split from that end by one ``str.split``, and any
+  other lines with their ends, which the reader splits itself. That is the one way a reader reads, not a lane:
+  the same lines split where they were split before (``tests/test_lines.py`` holds runs to the lines with their
+  ends, and the readers' blocks read from runs to those read from lines, on random programs).
 """

@@ -24,8 +24,9 @@ from ..context import BlockLane, Context
 from ..ir.expr import Expr
 from ..ir import Block, Feed, Motion
 from ..ir.block import MARK_BITS, MARK_MASK
-from ..numbers import DECIMAL_DIGITS, decimal_value
+from ..numbers import decimal_value
 from ..rs274.block_syntax import AXIS_LETTERS, CENTER_AXIS, WordBlockSyntax
+from ..rs274.canonical_line import LineNumbers, scan_marks
 from ..rs274.lathe_block_syntax import ONE_AXIS_WORDS, SINGLE_KEY
 from ..rs274.point_mix import point_mix
 from ..rs274.word_values import increments_divisor
@@ -56,13 +57,16 @@ class PlainLane(BlockLane):
     maybe F; under an active cycle, N and axis words only (the next hole of a row: ``Motion(None)``, the
     cycle resolve step reads the words)."""
 
-    __slots__ = ("syntax", "in_units")
+    __slots__ = ("syntax", "in_units", "numbers")
 
-    def __init__(self, syntax: WordBlockSyntax) -> None:
+    def __init__(self, syntax: WordBlockSyntax, numbers: LineNumbers | None = None) -> None:
         self.syntax = syntax
         """The run's block syntax, whose code table says what G0-G3 mean."""
         self.in_units = syntax.POINTLESS_IN_UNITS
         """A point-less number is in program units (the dialect's declaration, read once)."""
+        self.numbers = numbers if numbers is not None else LineNumbers()
+        """The run's numbers of the line the reader's scan left unmade last (``canonical_line.line_numbers``:
+        the reader's and this lane's), which ``read_marked`` reads a block's numbers from."""
 
     def read(self, block: Block, ctx: Context, words: list[tuple[str, str]]) -> bool:
         # The words' values are gathered apart (the axes in the motion's dictionary, the rest in locals) and
@@ -129,22 +133,26 @@ class PlainLane(BlockLane):
 
     def read_marked(self, block: Block, ctx: Context) -> bool:
         # ``read`` of a canonical line whose words the reader left unmade (``Block.marks``): the same reading,
-        # each number read where it stands in the line (no word objects made; a canonical axis-type number has
-        # its point, a code's and N's are digits). A G word's number is taken out (a look-up in the code table).
-        # Compiled: positions, the letter's index and the addresses met are machine integers; a number read is
-        # stored as the float object ``span_decimal`` made (``cast(object, ..)``: narrowed to a float, it was
-        # unboxed and boxed again, a second float a word), under the letter's cached string (``_LETTER_KEYS``,
-        # not a one-character slice of the line).
+        # each word read where it stands in the line (no word objects made) and each number as the reader's scan
+        # read it (``LineNumbers``: an axis-type word's value, the block number), not a second time. A line that
+        # is not the one whose numbers the run holds (a step between the reader and this one read ahead) is
+        # scanned again, as the reader scanned it. A G word's number is taken out (a look-up in the code table).
+        # Compiled: positions, the letter's index and the addresses met are machine integers; a value is boxed
+        # once, as it is stored, under the letter's cached string (``_LETTER_KEYS``, not a one-character slice of
+        # the line).
         text = block.spelled()
+        numbers = self.numbers
+        if numbers.text is not text:
+            scan_marks(text, b"", 0, numbers)
+            if numbers.text is not text:
+                return False  # (never: the line was left unmade by the same scan)
         marks = block.marks
         count = marks & MARK_MASK
         rest = marks >> MARK_BITS
         size: i64 = len(text)
         axes: dict[str, float | Expr] = {}
-        stored = cast("dict[str, object]", axes)
-        others: dict[str, object] | None = None
+        others: dict[str, float | Expr] | None = None
         sequence_value: object = None
-        value: object = None
         mode: str | None = None
         arc_words = False
         seen: i64 = 0
@@ -155,7 +163,6 @@ class PlainLane(BlockLane):
         while i < count:
             rest = rest >> MARK_BITS
             following: i64 = rest & MARK_MASK if i + 1 < count else size + 1  # the next letter's place
-            end = following - 1
             index: i64 = ord(text[at]) - 65
             if index < 0 or index > 25:
                 break
@@ -165,25 +172,21 @@ class PlainLane(BlockLane):
             seen |= bit
             kind = LETTER_KIND[index]
             if kind == LETTER_N:
-                sequence_value = span_whole(text, at + 1, end)
+                if i != 0:
+                    break  # (the scan reads the first word's block number: another N is the general path's)
+                sequence_value = numbers.sequence
             elif kind == LETTER_AXIS:
-                value = cast(object, span_decimal(text, at + 1, end))  # (not narrowed to a float: kept boxed)
-                if value is None:
-                    break  # (a canonical axis number has its point: never here)
-                stored[letters[index]] = value
+                axes[letters[index]] = numbers.value(i)  # (a canonical axis number has its point: a value)
             elif cycle:
                 break  # a code, F or a cycle word under an active cycle: the general path
             elif kind == LETTER_F or kind == LETTER_ARC:
-                value = cast(object, span_decimal(text, at + 1, end))
-                if value is None:
-                    break
                 if others is None:
                     others = {}
-                others[letters[index]] = value
+                others[letters[index]] = numbers.value(i)
                 if kind == LETTER_ARC:
                     arc_words = True
             elif kind == LETTER_G and mode is None:
-                key = _MOTION_KEYS.get(text[at + 1:end])
+                key = _MOTION_KEYS.get(text[at + 1:following - 1])
                 entry = self.syntax.table(ctx).g.get(key) if key is not None else None
                 if entry is None or entry[1] != "motion" or entry[2] not in MOTION_MODES:
                     break
@@ -193,8 +196,7 @@ class PlainLane(BlockLane):
             at = following
             i += 1
         else:
-            return self._finish(block, ctx, axes, cast("dict[str, float | Expr] | None", others), sequence_value, mode,
-                                arc_words, None, cycle)
+            return self._finish(block, ctx, axes, others, sequence_value, mode, arc_words, None, cycle)
         return False
 
     def _finish(self, block: Block, ctx: Context, axes: dict[str, float | Expr],
@@ -269,65 +271,6 @@ def whole_number(num: str) -> int:
         value = value * 10 + (c - 48)
         i += 1
     return value
-
-
-def span_whole(text: str, start: i64, end: i64) -> int:
-    """``whole_number`` of ``text[start:end]`` (digits only), read where it stands."""
-    size = end - start
-    if size <= 0 or size > 18:
-        return int(text[start:end])
-    value: i64 = 0
-    i = start
-    while i < end:
-        c: i64 = ord(text[i])
-        if c < 48 or c > 57:
-            return int(text[start:end])
-        value = value * 10 + (c - 48)
-        i += 1
-    return value
-
-
-def span_decimal(text: str, start: i64, end: i64) -> float | None:
-    """``decimal_value`` of ``text[start:end]`` where it has a decimal point (None where it has none), read where
-    it stands: an optional minus, digits with one point (``postproc.numbers.decimal_value``'s exact quotient,
-    which reads any other spelling, or more digits than it computes itself)."""
-    # Two loops, the whole digits' and the places', so that a digit costs no test of which part it is in (the
-    # digits are counted from the positions).
-    i = start
-    negative = i < end and ord(text[i]) == 45  # '-'
-    if negative:
-        i += 1
-    first = i
-    mantissa: i64 = 0
-    c: i64 = 0
-    while i < end:
-        c = ord(text[i])
-        if c < 48 or c > 57:
-            break
-        mantissa = mantissa * 10 + (c - 48)
-        i += 1
-    if i == end or c != 46:  # no point, or another character
-        return None
-    whole = i - first
-    i += 1
-    point = i
-    scale = 1.0  # ten to the places read (exact: at most DECIMAL_DIGITS places reach the division)
-    while i < end:
-        c = ord(text[i])
-        if c < 48 or c > 57:
-            return None
-        mantissa = mantissa * 10 + (c - 48)
-        scale = scale * 10.0
-        i += 1
-    digits = whole + (i - point)
-    if digits == 0:
-        return None
-    if digits > DECIMAL_DIGITS:
-        return decimal_value(text[start:end])
-    value = float(mantissa) / scale if i > point else float(mantissa)
-    return -value if negative else value
-
-
 
 
 def fill_values(values: dict[str, float | int | Expr], axes: dict[str, float | Expr], sequence: object,

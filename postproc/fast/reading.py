@@ -16,6 +16,7 @@ from typing import Final
 from ..context import BlockLane, Context, HoleLane
 from ..cycles.resolve import CannedCycleResolveSyntax
 from ..rs274.block_syntax import WordBlockSyntax
+from ..rs274.canonical_line import LineNumbers, line_numbers
 from ..rs274.lathe_block_syntax import LatheBlockSyntax
 from ..rs274.ngc_block_syntax import NgcWordBlockSyntax
 from ..syntaxes.syntax import Pipeline
@@ -41,14 +42,15 @@ _NGC_BASE: Final = frozenset(NgcWordBlockSyntax.__mro__)
 _RESOLVE_BASE: Final = frozenset(CannedCycleResolveSyntax.__mro__)
 
 
-def block_lane(syntax: WordBlockSyntax) -> BlockLane | None:
-    """The plain-block lane for ``syntax``'s run, or None (its general path reads every block)."""
+def block_lane(syntax: WordBlockSyntax, numbers: LineNumbers | None = None) -> BlockLane | None:
+    """The plain-block lane for ``syntax``'s run, or None (its general path reads every block). ``numbers``: the
+    run's numbers of the lines its reader's scan leaves unmade (``canonical_line.line_numbers``)."""
     cls = type(syntax)
     if isinstance(syntax, NgcWordBlockSyntax):
         return NgcPlainLane(syntax) if own_in(cls, NGC_BLOCK_METHODS, _NGC_BASE) else None
     if issubclass(cls, LatheBlockSyntax):
         return PlainLatheLane(syntax) if own_in(cls, BLOCK_METHODS, _LATHE_BASE) else None
-    return PlainLane(syntax) if own_in(cls, BLOCK_METHODS, _WORD_BASE) else None
+    return PlainLane(syntax, numbers) if own_in(cls, BLOCK_METHODS, _WORD_BASE) else None
 
 
 def hole_lane(resolver: CannedCycleResolveSyntax) -> HoleLane | None:
@@ -61,5 +63,5 @@ def install_reading(pipeline: Pipeline, ctx: Context) -> None:
     where they apply."""
     syntaxes = [step for step in pipeline.steps if isinstance(step, WordBlockSyntax)]
     resolvers = [step for step in pipeline.steps if isinstance(step, CannedCycleResolveSyntax)]
-    ctx.block_lane = block_lane(syntaxes[0]) if len(syntaxes) == 1 else None
+    ctx.block_lane = block_lane(syntaxes[0], line_numbers(ctx.run_data)) if len(syntaxes) == 1 else None
     ctx.hole_lane = hole_lane(resolvers[0]) if len(resolvers) == 1 else None

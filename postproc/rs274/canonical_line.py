@@ -12,11 +12,12 @@ regexes: both builds compute one way, and only the compiled one is the fast one)
 
 from __future__ import annotations
 
-from typing import Final
+from typing import Any, Final
 
-from mypy_extensions import i64
+from mypy_extensions import i64, mypyc_attr
 
 from ..ir.block import MARK_BITS, MARK_MASK, MARK_WORDS
+from ..numbers import DECIMAL_DIGITS, decimal_value
 
 CANONICAL: Final = 1
 """The bit of ``scan_words``'s answer for a canonical line (``CANONICAL_BLOCK``): upper-case words separated by
@@ -49,6 +50,74 @@ _LETTERS: Final[list[str]] = [chr(c) for c in range(128)]
 NO_WORDS: Final[list[tuple[str, str]]] = []
 """``scan_words``'s words for a line that is not words only (one shared list: never appended to)."""
 
+NUMBERS_KEY: Final = "canonical_line.numbers"
+"""``Context.run_data`` key: the run's ``LineNumbers`` (``line_numbers``)."""
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
+class LineNumbers:
+    """The numbers of the line ``scan_marks`` left unmade last in a run (``text``, None before the first or
+    while a scan is under way): each axis-type word's value, as the scan read it, by the word's place in the
+    line's ``Block.marks``, and its block number. The reader's scan fills it, and the plain-block lane
+    (``postproc.fast.plain``), which reads the block from its marks, takes the values from it instead of reading
+    each number again; a block whose line is not the one held (a step read ahead) is scanned again for them. One
+    per run (``line_numbers``): a run is read in one thread, and the scan and the lane meet here without a field
+    of the block."""
+
+    __slots__ = ("text", "sequence", "v0", "v1", "v2", "v3", "v4", "v5")
+
+    def __init__(self) -> None:
+        self.text: str | None = None
+        """The line whose numbers are held (compared by identity: the block holds the reader's string)."""
+        self.sequence = -1
+        """Its block number (``scan_words``'s third answer: -1 where its first word is no N)."""
+        # The values unboxed, one field a word (compiled: a double each, no float object made until the lane
+        # stores one; a list would box each value here and hold it).
+        self.v0 = 0.0
+        self.v1 = 0.0
+        self.v2 = 0.0
+        self.v3 = 0.0
+        self.v4 = 0.0
+        self.v5 = 0.0
+
+    def put(self, index: i64, value: float) -> None:
+        """Hold ``value`` for the word at ``index`` (below ``MARK_WORDS``)."""
+        if index == 0:
+            self.v0 = value
+        elif index == 1:
+            self.v1 = value
+        elif index == 2:
+            self.v2 = value
+        elif index == 3:
+            self.v3 = value
+        elif index == 4:
+            self.v4 = value
+        else:
+            self.v5 = value
+
+    def value(self, index: i64) -> float:
+        """The value held for the axis-type word at ``index`` (below ``MARK_WORDS``) of ``text``."""
+        if index == 0:
+            return self.v0
+        if index == 1:
+            return self.v1
+        if index == 2:
+            return self.v2
+        if index == 3:
+            return self.v3
+        if index == 4:
+            return self.v4
+        return self.v5
+
+
+def line_numbers(run_data: dict[str, Any]) -> LineNumbers:
+    """The run's ``LineNumbers`` (``Context.run_data``), made at the first asking (by the reader or the lane,
+    whichever asks first: each asks once a run)."""
+    numbers = run_data.get(NUMBERS_KEY)
+    if not isinstance(numbers, LineNumbers):
+        numbers = run_data[NUMBERS_KEY] = LineNumbers()
+    return numbers
+
 
 def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
     """The line's kind (0: not a line of words only, or not ASCII; else ``WORDS``, with ``CANONICAL``,
@@ -56,34 +125,45 @@ def scan_words(text: str) -> tuple[int, list[tuple[str, str]], int]:
     blanks left out) and the number of its block number when its first word is an N with digits only (else
     -1), from one pass: a canonical line needs no split, and its block number no second parse.
     ``NO_WORDS`` when the kind is 0."""
-    kind, words, sequence, _ = _scan(text, True, b"", 0)
+    kind, words, sequence, _ = _scan(text, True, b"", 0, None)
     return kind, words, sequence
 
 
-def scan_marks(text: str, data: bytes = b"", at: i64 = 0) -> tuple[int, list[tuple[str, str]], int, i64]:
+def scan_marks(text: str, data: bytes = b"", at: i64 = 0,
+               numbers: LineNumbers | None = None) -> tuple[int, list[tuple[str, str]], int, i64]:
     """``scan_words``'s reading of the line, from the same pass, with the words of a canonical line of at most
     ``MARK_WORDS`` words and 255 characters left unmade: their letters' places packed as ``Block.marks`` holds
     them (``postproc.ir.block.marked_words`` makes the same words from them), and ``NO_WORDS`` in their place.
     Any other line's words come made, with 0 marks. ``data``: ASCII bytes that hold the line's at ``at`` (the
     line check's copy of a piece of lines, ``postproc.syntaxes.lines.CheckedLines.runs``), read instead of a copy
-    of the line made here."""
-    kind, words, sequence, marks = _scan(text, False, data, at)
+    of the line made here. ``numbers``: where a line left unmade leaves its axis-type words' values and its block
+    number, read in the same pass (``LineNumbers``)."""
+    kind, words, sequence, marks = _scan(text, False, data, at, numbers)
     if kind and not marks:
-        kind, words, sequence, _ = _scan(text, True, data, at)  # (a line not canonical, or too long to mark: the words)
+        kind, words, sequence, _ = _scan(text, True, data, at, None)  # (a line not canonical, or too long to mark)
     return kind, words, sequence, marks
 
 
-def _scan(text: str, keep: bool, data: bytes, at: i64) -> tuple[int, list[tuple[str, str]], int, i64]:
+def _scan(text: str, keep: bool, data: bytes, at: i64,
+          numbers: LineNumbers | None) -> tuple[int, list[tuple[str, str]], int, i64]:
     """The scan (``scan_words``); ``keep`` False: the words' letters' places packed (the fourth answer, or 0
-    where they do not fit or the line is not canonical) instead of the words made. ``data``: the line's bytes
-    from ``at`` on (``scan_marks``); empty: the line's own ASCII copy, made here."""
+    where they do not fit or the line is not canonical) instead of the words made, and such a line's numbers
+    left in ``numbers`` (where given). ``data``: the line's bytes from ``at`` on (``scan_marks``); empty: the
+    line's own ASCII copy, made here."""
     # The line's bytes read each once, into ``ch`` (-1 past the end), as ``i`` moves on (a test of the same byte
     # read it again: ~100 instructions a line, callgrind). Compiled, a byte of a ``bytes`` is read in place with
     # a bounds check (a character of a ``str`` costs twice that: its kind and data told again each time), from
     # the line check's ASCII copy of the piece where the reader has it (``data``), else from a copy of the line.
     # Positions as i64 (compiled: machine integers, not tagged ones whose every step checks for overflow);
     # digits and blanks told by comparisons (a table look-up is a second index, with its own checks).
-    if data:
+    # A number's digits are summed as they pass (``mantissa``, a machine integer: three instructions a digit);
+    # where the line is left unmade, its axis-type words' values are kept from them (``numbers``),
+    # ``decimal_value``'s exact quotient of at most ``DECIMAL_DIGITS`` digits, ``decimal_value`` itself for more
+    # (whose sum, past 18 digits, is not used: it wraps compiled); ``tests/test_canonical_line.py`` compares them
+    # bit for bit with ``float``.
+    if numbers is not None:
+        numbers.text = None  # (what it holds is no longer a line's until this scan ends)
+    if len(data) > 0:  # (compiled, a length read; ``if data`` is a call, ~30 instructions)
         b = data
         base = at
     else:
@@ -131,7 +211,8 @@ def _scan(text: str, keep: bool, data: bytes, at: i64) -> tuple[int, list[tuple[
                 i += 1
                 ch = b[base + i] if i < n else -1
         start = i
-        signed = ch == 45 or ch == 43  # '-', '+'
+        negative = ch == 45  # '-'
+        signed = negative or ch == 43  # '-', '+'
         if signed:
             if ch == 43 or k != _AXIS:  # '+1.', 'T-1': plain, not canonical
                 canonical = False
@@ -140,6 +221,7 @@ def _scan(text: str, keep: bool, data: bytes, at: i64) -> tuple[int, list[tuple[
         digits = i
         lead = ch  # the number's first character
         first_n = (c == 78 or c == 110) and count == 0  # 'N', 'n' first: its number is the block's
+        mantissa: i64 = 0  # the number's digits (not a block number's), whole and places, as one integer
         if first_n:
             number: i64 = 0  # (a machine integer: no checked multiplication a digit; summed up to 18 digits)
             while 48 <= ch <= 57:
@@ -152,6 +234,7 @@ def _scan(text: str, keep: bool, data: bytes, at: i64) -> tuple[int, list[tuple[
                 sequence = int(text[digits:i])
         else:
             while 48 <= ch <= 57:
+                mantissa = mantissa * 10 + (ch - 48)
                 i += 1
                 ch = b[base + i] if i < n else -1
         whole = i - digits
@@ -161,8 +244,11 @@ def _scan(text: str, keep: bool, data: bytes, at: i64) -> tuple[int, list[tuple[
             ch = b[base + i] if i < n else -1
             fraction = i
             final: i64 = 0  # the last decimal place
+            scale = 1.0  # ten to the places (exact: a value is kept from at most DECIMAL_DIGITS digits)
             while 48 <= ch <= 57:
                 final = ch
+                mantissa = mantissa * 10 + (ch - 48)
+                scale = scale * 10.0
                 i += 1
                 ch = b[base + i] if i < n else -1
             places = i - fraction
@@ -174,6 +260,14 @@ def _scan(text: str, keep: bool, data: bytes, at: i64) -> tuple[int, list[tuple[
                   or places > 0 and final == 48
                   or signed and places == 0 and whole == 1 and lead == 48):
                 canonical = False  # 'G1.5', '00.5', more than six places, '0.10', '-0.'
+            if numbers is not None and k == _AXIS and count < MARK_WORDS:
+                if whole + places > DECIMAL_DIGITS:
+                    value = decimal_value(text[start:i])
+                else:
+                    value = float(mantissa) / scale
+                    if negative:
+                        value = -value
+                numbers.put(count, value)
         else:
             if whole == 0:  # a letter without a number
                 return 0, NO_WORDS, -1, 0
@@ -213,4 +307,7 @@ def _scan(text: str, keep: bool, data: bytes, at: i64) -> tuple[int, list[tuple[
             ch = b[base + i] if i < n else -1
     if keep or not canonical or count > MARK_WORDS or n > MARK_MASK:
         return (kind | CANONICAL if canonical else kind), words, sequence, 0
+    if numbers is not None:
+        numbers.sequence = sequence
+        numbers.text = text
     return kind | CANONICAL, words, sequence, marks | count

@@ -24,7 +24,7 @@ Line splitting and the word number syntax are the ISO lexer's. ``NgcReader`` is 
 
 from __future__ import annotations
 
-from mypy_extensions import mypyc_attr
+from mypy_extensions import i64, mypyc_attr
 
 import re
 from typing import Callable, ClassVar, Final, Iterable, Iterator
@@ -34,6 +34,7 @@ from postproc.dialect import Reader
 from postproc.errors import Location, ParseError, PostprocError, character_name
 from postproc.ir.expr import Expr, Var
 from postproc.ir import Block, BlockDelete, Comments, Sequence, TapeMark
+from postproc.syntaxes.lines import line_runs
 
 from .expressions import LINUXCNC_SPELLING, ExprSyntaxError, parse_word_value
 from .lexer import NUMBER
@@ -58,7 +59,7 @@ _O_WORDS: Final = "O-words (subprograms, loops, conditions) are not supported by
 def lex_block(file: str, number: int, text: str, eol: str, dialect: str,
               oword: OwordParser | None = None, calls: Callable[[Block, str], None] | None = None,
               ignore_slash: Callable[[Location], None] | None = None, polar: bool = False,
-              max_number: int = 0) -> Block:
+              max_number: int = 0, data: bytes = b"", at: i64 = 0) -> Block:
     """Lex one line into a block: words as written (letter case kept), comments, block delete, and
     with ``oword`` (the file's ``OwordParser``) o-words, assignments and expression values.
 
@@ -70,21 +71,27 @@ def lex_block(file: str, number: int, text: str, eol: str, dialect: str,
     With ``polar`` (LinuxCNC), ``@`` (polar radius) and ``^`` (polar angle) are addresses too, read as
     rs274's ``read_atsign``/``read_carat`` read them (a real value); the dialect's pipeline gives them
     their meaning. ``max_number`` (not 0): a larger block number is refused, as the controller refuses
-    its line (``NgcReader.MAX_BLOCK_NUMBER``).
+    its line (``NgcReader.MAX_BLOCK_NUMBER``). ``data``: ASCII bytes that hold the line's at ``at`` (the line
+    check's copy of its piece: ``plain_words``).
     """
     block = Block(number, text, eol)
     code = text
-    if "(" in code or ")" in code or ";" in code:
-        code = strip_comments(file, block, code)
-    if ignore_slash is not None and "/" in code:
-        ignore_slash(Location(file, number, code.index("/") + 1))
-        code = code.replace("/", " ")  # blanks inside a number are ignored: X1/2 is X12, as grbl reads it
-    if "/" in code:
-        m = _SKIP.match(code)
-        if m:
-            block.add(BlockDelete(1))
-            code = " " * m.end() + code[m.end():]
-    words = plain_words(code)
+    # Likeliest first: a line of words only, which holds no comment and no '/' (``plain_words`` refuses both), so
+    # that none is looked for; any other line has its comments and '/' taken out first, and its words read then.
+    words = plain_words(code, data, at)
+    if words is None:
+        if "(" in code or ")" in code or ";" in code:
+            code = strip_comments(file, block, code)
+        if ignore_slash is not None and "/" in code:
+            ignore_slash(Location(file, number, code.index("/") + 1))
+            code = code.replace("/", " ")  # blanks inside a number are ignored: X1/2 is X12, as grbl reads it
+        if "/" in code:
+            m = _SKIP.match(code)
+            if m:
+                block.add(BlockDelete(1))
+                code = " " * m.end() + code[m.end():]
+        if code is not text:
+            words = plain_words(code)
     if words is not None:
         for letter, _ in words:
             if letter == "O" or letter == "o":  # (compiled, two comparisons; ``in "Oo"`` is a call a word)
@@ -115,19 +122,29 @@ def lex_block(file: str, number: int, text: str, eol: str, dialect: str,
     return block
 
 
-def plain_words(code: str) -> list[tuple[str, str]] | None:
+def plain_words(code: str, data: bytes = b"", at: i64 = 0) -> list[tuple[str, str]] | None:
     """The words of a line of words only, as ``_WORD.findall`` finds them where ``_WORDS_ONLY`` matches the
     whole line; None where it does not, and for any line that is not ASCII (``\\d`` is any Unicode digit:
     the regexes read those). One pass over the line's bytes: compiled, about a tenth of the two regexes
     (the LinuxCNC reading spent ~20k instructions a line in them). ``tests/test_ngc_plain_words.py``
-    holds it to the regexes on random lines."""
-    try:
-        b = code.encode("ascii")  # compiled, a C call
-    except UnicodeEncodeError:
-        return None
-    n = len(b)
+    holds it to the regexes on random lines. ``data``: ASCII bytes that hold the line's at ``at`` (the line
+    check's copy of its piece, ``postproc.syntaxes.lines.CheckedLines.runs``), read instead of a copy of the line
+    made here (~150 instructions a line)."""
+    # Positions are the bytes' (``base`` the line's first): a word's letter and number are cut from the line at
+    # their position less ``base``. Positions as i64 (compiled: machine integers; a tagged end that is a sum may be
+    # a long one, and every comparison with it took the slow call: ~400 instructions a line).
+    base: i64 = 0
+    if len(data) > 0:  # (compiled, a length read; ``if data`` is a call)
+        b = data
+        base = at
+    else:
+        try:
+            b = code.encode("ascii")  # compiled, a C call
+        except UnicodeEncodeError:
+            return None
+    n: i64 = base + len(code)
     words: list[tuple[str, str]] = []
-    i = 0
+    i: i64 = base
     while True:
         while i < n and (b[i] == 32 or b[i] == 9):  # ' ', '\t'
             i += 1
@@ -160,7 +177,7 @@ def plain_words(code: str) -> list[tuple[str, str]] | None:
                 return None
         else:
             return None
-        words.append((code[start], code[number:i]))
+        words.append((code[start - base], code[number - base:i - base]))
 
 
 def strip_comments(file: str, block: Block, code: str) -> str:
@@ -367,35 +384,48 @@ class NgcReader(Reader):
         opened: bool | None = None  # (``TAPE_MARK_REFUSED``) whether a ``%`` opened the program; None until the
         ended = False  # first line with content; and whether the program has ended (M2/M30)
         number = 0
-        for raw in lines:  # (each line split natively: the generator ``split_lines`` cost ~3.5k instructions a line)
-            number += 1
-            text, eol = split_line(raw)
-            try:
-                block = lex_block(file, number, text, eol, dialect, oword, calls, ignore_slash, polar, max_number)
-            except PostprocError as err:
-                report(err, text)
-                yield Block(number, text, eol)
-                continue
-            if refused:
-                sections = block.sections
-                if "TapeMark" in sections:
-                    if "Comments" in sections and not ended:  # (rs274 reads a comment-only line, a '%' alone)
-                        report(ParseError(f"'%' must stand alone on its line: no comment beside it ({refused})",
-                                          Location(file, number, text.find("%") + 1)), text)
-                        yield Block(number, text, eol)  # kept as text, as every refused line
-                        continue
-                    if opened is False and not ended:
-                        report(ParseError(f"'%' closes only a program that opens with '%' on its first line ({refused})",
-                                          Location(file, number, 1)), text)
-                        yield Block(number, text, eol)  # kept as text, as every refused line
-                        continue
-                    opened = opened is None or opened
-                elif sections or block.words:
-                    if opened is None:
-                        opened = False
-                    if not ended and ("M" in text or "m" in text):  # (an M word's letter is in its line)
-                        ended = _ends(block.words)
-            yield block
+        # Checked lines come in runs (``postproc.syntaxes.lines.line_runs``, as the ISO family's Fanuc reader takes
+        # them): mostly many texts already split from the end they share (a line cut from its end cost ~400
+        # instructions), with the line check's ASCII copy of their piece (``data``: each line's bytes at ``at``, which
+        # the word scan reads); other lines come with their ends, each split natively (the generator
+        # ``split_lines`` cost ~3.5k instructions a line).
+        for texts, end, data in line_runs(lines):
+            at: i64 = 0
+            for raw in texts:
+                number += 1
+                if end is None:
+                    text, eol = split_line(raw)
+                else:
+                    text, eol = raw, end
+                start = at
+                at += len(text) + len(eol)
+                try:
+                    block = lex_block(file, number, text, eol, dialect, oword, calls, ignore_slash, polar, max_number,
+                                      data, start)
+                except PostprocError as err:
+                    report(err, text)
+                    yield Block(number, text, eol)
+                    continue
+                if refused:
+                    sections = block.sections
+                    if "TapeMark" in sections:
+                        if "Comments" in sections and not ended:  # (rs274 reads a comment-only line, a '%' alone)
+                            report(ParseError(f"'%' must stand alone on its line: no comment beside it ({refused})",
+                                              Location(file, number, text.find("%") + 1)), text)
+                            yield Block(number, text, eol)  # kept as text, as every refused line
+                            continue
+                        if opened is False and not ended:
+                            report(ParseError(f"'%' closes only a program that opens with '%' on its first line "
+                                              f"({refused})", Location(file, number, 1)), text)
+                            yield Block(number, text, eol)  # kept as text, as every refused line
+                            continue
+                        opened = opened is None or opened
+                    elif sections or block.words:
+                        if opened is None:
+                            opened = False
+                        if not ended and ("M" in text or "m" in text):  # (an M word's letter is in its line)
+                            ended = _ends(block.words)
+                yield block
 
     def _ignored_slash(self, where: Location) -> None:
         self.ctx.diagnostics.warn(f"'/' is ignored by {self.DIALECT} (no block delete): the block runs", where)
