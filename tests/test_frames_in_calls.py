@@ -13,6 +13,8 @@ from __future__ import annotations
 
 import io
 import re
+from pathlib import Path
+from typing import Any
 
 from postproc.api import translate
 from postproc.simulate.verify import verify_lines
@@ -117,13 +119,31 @@ def test_a_subprogram_called_under_a_frame_cancelled_after_the_call() -> None:
     assert _xy(out) == [(0.0, 0.0), (105.0, 5.0), (0.0, 0.0)]
 
 
-def test_a_subprogram_called_under_a_frame_that_stays_is_kept() -> None:
-    """With no frame command after the call, the subprogram's text stands under the frame of its call: the program
-    is kept as written, the subprogram's move carried."""
+def test_a_subprogram_called_under_a_frame_that_stays_is_flattened() -> None:
+    """With no frame command after the call, the subprogram's text still runs under the frame of its call, which is
+    evaluated into the coordinates: a call under it is flattened (the called text may be a library's, below), the
+    subprogram's move carried."""
     text = CALL_UNDER_A_FRAME.replace("G52 X0.\n", "")
     out, warnings = _translated(text, "fanuc", "linuxcnc")
-    assert not _flattened(warnings) and "M98 P2000" in out and "O2000" in out
-    assert _xy(out) == [(0.0, 0.0), (100.0, 0.0), (105.0, 5.0)]
+    assert _flattened(warnings) and "\nM98" not in out
+    assert _xy(out) == [(0.0, 0.0), (105.0, 5.0), (100.0, 0.0)]  # (the run's order: the call, then X0 Y0)
+
+
+def test_a_call_under_a_frame_to_a_library_subprogram_is_flattened(cli: Any, tmp_path: Path) -> None:
+    """A library's subprogram (``--lib``) kept as ``M98 P2000`` would run on the target without the G52 evaluated
+    into the caller's moves (its move to X5 Y5 instead of X105 Y5: exit 0 on main before this rule): flattened, its
+    move carries the offset."""
+    lib = tmp_path / "lib"
+    lib.mkdir()
+    (lib / "O2000.nc").write_text("O2000\nG01 X5. Y5. F100.\nM99\n")
+    main = "O1000\nG21 G17 G90 G94\nG00 X0. Y0. Z5.\n#1=1\nG52 X100. Y0.\nM98 P2000\nG00 X0. Y0.\nM30\n"
+    (tmp_path / "main.nc").write_text(main)
+    result = cli("translate", "--from", "fanuc", "--to", "linuxcnc", "--lib", lib, tmp_path / "main.nc")
+    assert result.status == 0, result.err
+    out = result.out.decode()
+    assert "flattened" in result.err and "\nM98" not in out
+    # by hand: the start, the main program's (0,0) under G52 X100 is (100,0) after the call's (105,5)
+    assert _xy(out) == [(0.0, 0.0), (105.0, 5.0), (100.0, 0.0)]
 
 
 def test_a_subprogram_defined_before_a_frame_command_and_called_after_it() -> None:

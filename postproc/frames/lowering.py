@@ -199,7 +199,7 @@ class FrameEvaluator(BlockStep):
             self.targets(s)
             control = s.get(CONTROL)
             if control is not None:
-                self.reached.order.control(control, SYMBOLIC)
+                self.reached.order.control(control, SYMBOLIC, self.frame is None or self.frame.plain())
         changed = False
         if not changes_nothing(s):
             self.settings(block, s)  # first: a G10 in a block with G20 gives inches [V: rs274 order of execution]

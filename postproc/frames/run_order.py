@@ -59,10 +59,14 @@ class RunOrder:
         """A program's start (a Fanuc ``O`` number) in the symbolic part: a subprogram's text (``called``)."""
         self.called = True
 
-    def control(self, section: Section, symbolic_error: str) -> None:
+    def control(self, section: Section, symbolic_error: str, plain: bool = True) -> None:
         """A control statement: constructs open and close, a jump waits for its target or goes back, a call or a
-        subprogram's definition is noted (``called``)."""
+        subprogram's definition is noted (``called``). A call while the evaluated frame is not plain is refused:
+        the subprogram it runs may not stand in this program's text (a library's, ``--lib``: kept as a call, it
+        would run on the target without the frame evaluated here; ``tests/test_frames_in_calls.py``)."""
         if isinstance(section, _CALLING):
+            if not plain and isinstance(section, (Call, ModalCall)):
+                raise ProgramError(f"{symbolic_error}: a call while the frame is on")
             self.called = True
         if isinstance(section, _OPENING):
             self.depth += 1
