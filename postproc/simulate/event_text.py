@@ -288,36 +288,44 @@ class _KeyTexts:
         (``', "controlled": {"x": '``), the others ``later``'s."""
         self.kind: str | None = None
         self.kind_text = ""
-        """``', "move": "feed"'`` for the kind ``kind``."""
+        """``', "move": "feed", "x": '`` for the kind ``kind``: with the first axis key after it (a record's point
+        follows its kind: one text written where there were two, ~65 instructions a move)."""
         self.kinds: dict[str, str] = {}
-        """Each kind met -> its text (a program's moves alternate between a few kinds)."""
+        """Each kind met -> its text (a program's moves alternate between a few kinds), for the keys ``keys``."""
         self.f: object = None
         self.f_text = ""
         """``', "f": 1500'`` for the feed object ``f`` (a feed changes rarely: the simulator writes one object)."""
+        self.f_first = ""
+        """``f_text`` with the controlled point's opening after it (``', "f": 1500, "controlled": {"x": '``): a
+        record with a feed, no ``feed_mode`` and a controlled point writes it as one text."""
 
     def update(self, keys: tuple[str, ...]) -> None:
         self.keys = keys
         self.later = [_key_text(key, True) for key in keys]
         self.first = [_KEY_CONTROLLED + _key_text(key, False) if i == 0 else self.later[i]
                       for i, key in enumerate(keys)]
+        self.kinds = {}  # (their texts hold the first key: spelt again for these keys)
+        self.kind = None
+        self.f = None
 
     def kind_of(self, kind: str) -> str:
-        """The text of ``kind``, kept as ``kind_text``."""
+        """The text of ``kind`` with the first axis key (``kind_text``), kept as ``kind_text``."""
         text = self.kinds.get(kind)
         if text is None:
             word = _WORDS.get(kind)
-            text = _KEY_MOVE + (word if word is not None else _word_text(kind))
+            text = _KEY_MOVE + (word if word is not None else _word_text(kind)) + (self.later[0] if self.later else "")
             self.kinds[kind] = text
         self.kind = kind
         self.kind_text = text
         return text
 
     def feed(self, f: float | int) -> None:
-        """Spell the feed ``f`` (``f_text``), kept for the object ``f``."""
+        """Spell the feed ``f`` (``f_text``, ``f_first``), kept for the object ``f``."""
         spelt = StringWriter()
         spelt.write(_KEY_F)
         _number_into(f, spelt)
         self.f_text = spelt.getvalue()
+        self.f_first = self.f_text + (self.first[0] if self.first else "")
         self.f = f
 
 
@@ -339,9 +347,12 @@ def _record_into(record: MoveRecord, w: StringWriter, line_end: bool) -> None:
     w.write(_KEYS_LINE)
     _int_into(record.line, w)
     kind = record.kind
-    w.write(texts.kind_text if kind is texts.kind else texts.kind_of(kind))
+    w.write(texts.kind_text if kind is texts.kind else texts.kind_of(kind))  # (with the first axis key)
+    keyed = False
     for text, value in zip(texts.later, record.point):
-        w.write(text)
+        if keyed:
+            w.write(text)
+        keyed = True
         if isinstance(value, float):  # (most often: the float's own call, not through the union's)
             _float_into(value, w)
         else:
@@ -358,10 +369,15 @@ def _record_into(record: MoveRecord, w: StringWriter, line_end: bool) -> None:
     f = record.f
     mode = record.feed_mode
     controlled = record.controlled
+    keyed = False  # the controlled point's opening and first key are written (with the feed)
     if f is not None:
         if f is not texts.f:  # (identity: the same object has the same text; an equal one is spelt again)
             texts.feed(f)
-        w.write(texts.f_text)
+        if mode is None and controlled is not None and keys:
+            w.write(texts.f_first)
+            keyed = True
+        else:
+            w.write(texts.f_text)
     if mode is not None:
         w.write(_KEY_FEED_MODE)
         w.write(_word_text(mode))
@@ -376,7 +392,10 @@ def _record_into(record: MoveRecord, w: StringWriter, line_end: bool) -> None:
             w.write(_CLOSE_LINE if line_end else _CLOSE)
             return
     for text, value in zip(texts.first, controlled):
-        w.write(text)
+        if keyed:
+            keyed = False
+        else:
+            w.write(text)
         if isinstance(value, float):
             _float_into(value, w)
         else:
