@@ -62,6 +62,11 @@ class Report:
     chord_where: tuple[int, int] | None = None
     """Source lines (IN, OUT) of the chord furthest from its arc."""
     steps: Steps = field(default_factory=Steps, repr=False, compare=False)
+    keys_in: tuple[str, ...] = field(default=(), repr=False, compare=False)
+    keys_out: tuple[str, ...] = field(default=(), repr=False, compare=False)
+    same_keys: bool = field(default=True, repr=False, compare=False)
+    """The end keys of the pair compared last (one tuple a simulation) and whether they are alike: a pair with the
+    same two tuples takes each axis at its own index, not looked for (``_differ``)."""
     """Where ``_differ`` collects a pair's distances (one for the comparison: no object a pair)."""
 
     @property
@@ -456,15 +461,20 @@ def _differ(a: Move | Event | None, b: Move | Event | None, report: Report) -> s
         if isinstance(a, Move) or isinstance(b, Move) or not _same_event(a, b):
             return f"IN has {describe(a)}, OUT {describe(b)}"
         return None
-    if a.kind != b.kind or a.plane != b.plane:
+    if a.kind != b.kind or a.plane is not b.plane and a.plane != b.plane:  # (identity first: two straight moves' None)
         return f"IN has {describe(a)}, OUT {describe(b)}"
     if not _same_feed(a.f, b.f):
         return f"IN feeds at F{a.f:g}, OUT at F{b.f:g} ({describe(a)})"
     a_keys, a_end, b_keys, b_end = a.end_keys, a.end_values, b.end_keys, b.end_values
     steps = report.steps  # the axes both have (math.dist's norm)
     steps.clear()
+    if a_keys is report.keys_in and b_keys is report.keys_out:
+        same = report.same_keys
+    else:
+        same = a_keys == b_keys
+        report.keys_in, report.keys_out, report.same_keys = a_keys, b_keys, same
     for i in range(len(a_keys)):
-        j = key_index(b_keys, a_keys[i], i)
+        j = i if same else key_index(b_keys, a_keys[i], i)
         if j >= 0:
             steps.add(a_end[i] - b_end[j])
     d0, d1, d2, n, more = steps.d0, steps.d1, steps.d2, steps.n, steps.more

@@ -80,16 +80,40 @@ def float_text(value: float) -> str:
 def _float_into(value: float, w: StringWriter) -> None:
     """Write ``float_text(value)`` into ``w``: a whole number of millionths below 1e8 by its digits (a float
     parameter: compiled, unboxed once; the units machine integers, ``i64``), any other float by ``repr``."""
+    units = _float_units(value)
+    if units != _NO_UNITS:
+        _units_into(units, w)
+        return
+    _repr_into(value, w)
+
+
+_NO_UNITS: Final = -(2 ** 63)
+"""``_float_units`` of a float its digits do not spell (``repr`` does)."""
+
+
+def _float_units(value: float) -> i64:
+    """The whole number of millionths ``value`` is, where ``_units_into`` spells it as ``repr`` does (a float of
+    ``num``'s, 1e-4 <= |value| < 1e8), else ``_NO_UNITS``: a record's controlled point spells its programmed point's
+    own floats again from their units (``_record_into``)."""
     if _SMALLEST <= value < _LARGEST or -_LARGEST < value <= -_SMALLEST:
         units = i64(value * _SCALE + (0.5 if value > 0.0 else -0.5))  # (|units| < 1e14: exact as a float)
         if float(units) / _SCALE == value:
-            if units < 0:
-                w.append(_MINUS)
-                units = -units
-            whole = units // _UNITS
-            _whole_into(whole, w)
-            _fraction_into(units - whole * _UNITS, w)
-            return
+            return units
+    return _NO_UNITS
+
+
+def _units_into(units: i64, w: StringWriter) -> None:
+    """Write the float of ``units`` millionths (``_float_units``) as ``repr`` does."""
+    if units < 0:
+        w.append(_MINUS)
+        units = -units
+    whole = units // _UNITS
+    _whole_into(whole, w)
+    _fraction_into(units - whole * _UNITS, w)
+
+
+def _repr_into(value: float, w: StringWriter) -> None:
+    """Write a float ``_float_units`` does not spell: by ``repr``; ValueError where it is not finite."""
     if value - value != 0.0:  # inf - inf and nan - nan are nan
         raise ValueError(f"Out of range float values are not JSON compliant: {value!r}")
     w.write(float.__repr__(value))
@@ -338,8 +362,9 @@ def _record_into(record: MoveRecord, w: StringWriter, line_end: bool) -> None:
     (``tests/test_toolpath_numbers.py`` holds it to json's text of ``event()``). A controlled point's float that is
     the programmed point's own object (under a tool length alone, its X and Y) is spelt again: copying its text from
     where it was written, a character at a time (``w[k]``, ~35 instructions a character compiled, keys between
-    included), cost what it saved (callgrind, branch tpwall3). The lists are walked by ``zip`` (compiled, an item
-    taken unchecked, where an index was a checked call)."""
+    included), cost what it saved (callgrind, branch tpwall3); it is spelt from the units its programmed twin had
+    (``_float_units`` once, not twice: ~100 instructions a float, branch tpmove). The lists are walked by ``zip``
+    (compiled, an item taken unchecked, where an index was a checked call)."""
     texts = _RECORD_KEYS
     keys = record.keys
     if keys is not texts.keys:
@@ -349,14 +374,28 @@ def _record_into(record: MoveRecord, w: StringWriter, line_end: bool) -> None:
     kind = record.kind
     w.write(texts.kind_text if kind is texts.kind else texts.kind_of(kind))  # (with the first axis key)
     keyed = False
-    for text, value in zip(texts.later, record.point):
+    point = record.point
+    i = 0
+    u0 = u1 = u2 = _NO_UNITS  # the first three floats' units, for the controlled point's floats that are them
+    for text, value in zip(texts.later, point):
         if keyed:
             w.write(text)
         keyed = True
         if isinstance(value, float):  # (most often: the float's own call, not through the union's)
-            _float_into(value, w)
+            units = _float_units(value)
+            if units != _NO_UNITS:
+                _units_into(units, w)
+            else:
+                _repr_into(value, w)
+            if i == 0:
+                u0 = units
+            elif i == 1:
+                u1 = units
+            elif i == 2:
+                u2 = units
         else:
             _int_into(value, w)
+        i += 1
     centre = record.centre
     if centre is not None:  # an arc: its centre and plane
         centre_keys = record.centre_keys
@@ -391,15 +430,25 @@ def _record_into(record: MoveRecord, w: StringWriter, line_end: bool) -> None:
             w.write("{}")
             w.write(_CLOSE_LINE if line_end else _CLOSE)
             return
-    for text, value in zip(texts.first, controlled):
+    i = 0
+    for text, value, programmed in zip(texts.first, controlled, point):
         if keyed:
             keyed = False
         else:
             w.write(text)
         if isinstance(value, float):
-            _float_into(value, w)
+            units = _NO_UNITS
+            if value is programmed and i < 3:  # (its units known: not unboxed and checked again)
+                units = u0 if i == 0 else u1 if i == 1 else u2
+            if units == _NO_UNITS:
+                units = _float_units(value)
+            if units != _NO_UNITS:
+                _units_into(units, w)
+            else:
+                _repr_into(value, w)
         else:
             _int_into(value, w)
+        i += 1
     if ccentre is not None:
         centre_keys = record.centre_keys
         for i in range(len(centre_keys)):

@@ -40,9 +40,19 @@ def _straight(kind: str, start_keys: Keys, start: list[float], keys: Keys, end: 
     m.length = length
     if length > 0:
         n = len(keys)
+        along = 0.0
+        if n == 3:  # (the loop below for three axes: a list made of three, not grown from empty, ~250 instructions)
+            u0 = d0 / length
+            u1 = d1 / length
+            u2 = d2 / length
+            along += d0 * u0
+            along += d1 * u1
+            along += d2 * u2
+            m.unit_keys, m.unit = keys, [u0, u1, u2]
+            m.along = along
+            return m
         unit: list[float] = []  # (appended: compiled, ``[0.0] * n`` is a list repeated through Python, ~200 more)
         rest: list[float] = more if more is not None else NO_STEPS
-        along = 0.0
         for i in range(n):
             # a float local, each step unboxed: compiled, the conditional of a list's item was an object and
             # its division, product and sum three generic calls (~300 instructions an axis)
