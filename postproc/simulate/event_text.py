@@ -32,6 +32,7 @@ from librt.strings import StringWriter
 from mypy_extensions import i32, i64, mypyc_attr
 
 from ..geometry.arcs import PLACES
+from .events import ROUND
 from .move_record import MoveRecord
 
 _PLACES: Final = 6
@@ -87,8 +88,9 @@ def _float_into(value: float, w: StringWriter) -> None:
     _repr_into(value, w)
 
 
-_NO_UNITS: Final = -(2 ** 63)
-"""``_float_units`` of a float its digits do not spell (``repr`` does)."""
+_NO_UNITS: Final[i64] = -1_000_000_000_000_000_000
+"""``_float_units`` of a float its digits do not spell (``repr`` does): beyond any float's units (below 1e14), and
+a machine integer constant (compiled, ``-(2 ** 63)`` was a Python int object, converted at each comparison)."""
 
 
 def _float_units(value: float) -> i64:
@@ -96,9 +98,9 @@ def _float_units(value: float) -> i64:
     ``num``'s, 1e-4 <= |value| < 1e8), else ``_NO_UNITS``: a record's controlled point spells its programmed point's
     own floats again from their units (``_record_into``)."""
     if _SMALLEST <= value < _LARGEST or -_LARGEST < value <= -_SMALLEST:
-        units = i64(value * _SCALE + (0.5 if value > 0.0 else -0.5))  # (|units| < 1e14: exact as a float)
-        if float(units) / _SCALE == value:
-            return units
+        k = (value * _SCALE + ROUND) - ROUND  # the nearest whole number of millionths, as a float (``events.ROUND``;
+        if k / _SCALE == value:  # a tie is never such a float's: it lies within 0.03 of its ``k``)
+            return i64(k)  # (|k| < 1e14: exact)
     return _NO_UNITS
 
 
@@ -376,7 +378,10 @@ def _record_into(record: MoveRecord, w: StringWriter, line_end: bool) -> None:
     keyed = False
     point = record.point
     i = 0
-    u0 = u1 = u2 = _NO_UNITS  # the first three floats' units, for the controlled point's floats that are them
+    u0: i64 = _NO_UNITS  # the first three floats' units, for the controlled point's floats that are them
+    u1: i64 = _NO_UNITS
+    u2: i64 = _NO_UNITS
+    units: i64
     for text, value in zip(texts.later, point):
         if keyed:
             w.write(text)
@@ -436,10 +441,16 @@ def _record_into(record: MoveRecord, w: StringWriter, line_end: bool) -> None:
             keyed = False
         else:
             w.write(text)
+        twin = value is programmed  # (the two objects, before ``value`` is read as a float)
         if isinstance(value, float):
             units = _NO_UNITS
-            if value is programmed and i < 3:  # (its units known: not unboxed and checked again)
-                units = u0 if i == 0 else u1 if i == 1 else u2
+            if twin and i < 3:  # (its units known: not unboxed and checked again)
+                if i == 0:
+                    units = u0
+                elif i == 1:
+                    units = u1
+                else:
+                    units = u2
             if units == _NO_UNITS:
                 units = _float_units(value)
             if units != _NO_UNITS:
