@@ -10,7 +10,7 @@ import json
 import math
 import sys
 from pathlib import Path
-from typing import Any
+from typing import Any, Callable
 
 import pytest
 from hypothesis import given, settings, strategies as st
@@ -27,6 +27,11 @@ from tests.test_normalise_reference import EPS, _path
 
 ROOT = Path(__file__).parent.parent
 ENCODER = event_encoder()
+
+
+def _as_text(written: list[str]) -> Callable[[bytes], None]:
+    """``write_lines``' ``write`` that keeps each chunk (ASCII bytes) as its text."""
+    return lambda chunk: written.append(chunk.decode("ascii"))
 
 
 def _json(event: Any) -> str:
@@ -88,7 +93,7 @@ def test_a_record_is_written_as_json_writes_its_event(record: MoveRecord) -> Non
 def test_write_lines_writes_records_among_events_as_json_writes_them(stream: list[Any]) -> None:
     """Runs of records with other events between them, over more than one chunk."""
     written: list[str] = []
-    write_lines(iter(stream), written.append, ENCODER)
+    write_lines(iter(stream), _as_text(written), ENCODER)
     assert "".join(written) == "".join(_json(ev) + "\n" for ev in as_events(stream))
 
 
@@ -98,7 +103,7 @@ def test_a_record_that_is_not_finite_fails_with_its_event(bad: float) -> None:
     record = MoveRecord(2, "feed", ("x", "z"), [1, 2], 100, None, [1, bad])
     written: list[str] = []
     with pytest.raises(EventValueError) as failure:
-        write_lines(iter([before, record]), written.append, ENCODER)
+        write_lines(iter([before, record]), _as_text(written), ENCODER)
     assert "".join(written) == '{"line": 1, "move": "rapid", "x": 1}\n'
     assert failure.value.event == record.event() or math.isnan(bad)
     assert failure.value.event["line"] == 2
@@ -196,5 +201,5 @@ def test_a_simulation_streams_the_records_of_its_events(dialect: str, program: s
     assert not any(isinstance(ev, MoveRecord) for ev in plain)
     assert list(as_events(streamed)) == plain
     written: list[str] = []
-    write_lines(iter(streamed), written.append, ENCODER)
+    write_lines(iter(streamed), _as_text(written), ENCODER)
     assert "".join(written) == "".join(_json(ev) + "\n" for ev in plain)

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import json
 import math
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 
 import pytest
 from hypothesis import given, settings, strategies as st
@@ -40,6 +40,11 @@ SCALARS = st.one_of(st.integers(-10**20, 10**20), FLOATS, st.booleans(), st.none
 VALUES = st.one_of(SCALARS, st.lists(SCALARS, max_size=3), st.dictionaries(st.text(max_size=3), SCALARS, max_size=4))
 EVENTS = st.dictionaries(st.one_of(st.text(max_size=6), st.integers(0, 9)), VALUES, max_size=8)
 ENCODER = event_encoder()
+
+
+def _as_text(written: list[str]) -> Callable[[bytes], None]:
+    """``write_lines``' ``write`` that keeps each chunk (ASCII bytes) as its text."""
+    return lambda chunk: written.append(chunk.decode("ascii"))
 
 
 @settings(max_examples=500, deadline=None)
@@ -221,7 +226,7 @@ def test_write_lines_writes_each_event_as_json_does_a_chunk_at_a_time(events: li
     line by line, over as many chunks as the events fill (up to 800 events: three chunks and a part)."""
     stream = events * copies
     written: list[str] = []
-    write_lines(iter(stream), written.append, ENCODER)
+    write_lines(iter(stream), _as_text(written), ENCODER)
     assert "".join(written) == "".join(_json(ev) + "\n" for ev in stream)
     assert all(chunk.count("\n") <= 256 for chunk in written)
 
@@ -236,12 +241,12 @@ def test_write_lines_writes_the_lines_before_an_error() -> None:
 
     written: list[str] = []
     with pytest.raises(ValueError, match="the program had errors"):
-        write_lines(failing(), written.append, ENCODER)
+        write_lines(failing(), _as_text(written), ENCODER)
     assert "".join(written).splitlines() == [_json({"line": i, "move": "feed", "x": i / 8}) for i in range(300)]
     written.clear()
     events = [{"line": i, "move": "feed", "x": float(i)} for i in range(270)] + [{"line": 270, "x": math.inf}]
     with pytest.raises(EventValueError) as err:
-        write_lines(iter(events + [{"line": 271}]), written.append, ENCODER)
+        write_lines(iter(events + [{"line": 271}]), _as_text(written), ENCODER)
     assert err.value.event["line"] == 270
     assert "".join(written) == "".join(_json(ev) + "\n" for ev in events[:270])
 
@@ -261,7 +266,7 @@ def test_write_lines_writes_runs_of_events_of_few_shapes_as_json_does(
     key moving to another place, nested or not, are written as json writes them."""
     stream = [dict(shapes[i % len(shapes)]) for i in order]
     written: list[str] = []
-    write_lines(iter(stream), written.append, ENCODER)
+    write_lines(iter(stream), _as_text(written), ENCODER)
     assert "".join(written) == "".join(_json(ev) + "\n" for ev in stream)
 
 
@@ -291,7 +296,7 @@ def test_a_record_run_writes_each_feed_and_kind_it_holds(feeds: list[float | int
     records = [MoveRecord(n, kinds[n % len(kinds)], ("x", "z"), [n / 8, -n], None if kinds[n % len(kinds)] == "rapid"
                           else f, None, None if n % 2 else [n / 8, 100 - n]) for n, f in enumerate(feeds * 3)]
     written: list[str] = []
-    write_lines(iter(records), written.append, ENCODER)
+    write_lines(iter(records), _as_text(written), ENCODER)
     assert "".join(written) == "".join(_json(r.event()) + "\n" for r in records)
 
 
@@ -330,7 +335,7 @@ def test_write_lines_writes_records_as_json_writes_their_events(records: list[Mo
     ``_CLOSING``): each line is json's text of the record's ``event()``, the record alone (``event_text``)
     too."""
     written: list[str] = []
-    write_lines(iter(records), written.append, ENCODER)
+    write_lines(iter(records), _as_text(written), ENCODER)
     assert "".join(written) == "".join(_json(r.event()) + "\n" for r in records)
     for r in records:
         assert event_text(r, ENCODER) == _json(r.event())

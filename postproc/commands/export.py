@@ -55,6 +55,17 @@ def write_backplot(events: Iterable[Event], out: Any, fmt: str, start: dict[str,
             plot.write_png(out)
 
 
+def _bytes_write(out: TextIO) -> Callable[[bytes], object]:
+    """How ``write_jsonl`` writes a chunk of ASCII bytes to the text stream ``out``: to its binary buffer, after what
+    it holds as text (a text file), else decoded (a stream of text alone: ``io.StringIO``)."""
+    buffer = getattr(out, "buffer", None)
+    if buffer is not None:
+        out.flush()
+        write: Callable[[bytes], object] = buffer.write
+        return write
+    return lambda chunk: out.write(chunk.decode("ascii"))
+
+
 def event_encoder() -> Callable[[Event], str]:
     """``json.JSONEncoder(allow_nan=False).encode`` for one event, made once: ``encode`` makes json's C
     encoder anew at every call, so the C encoder it would make is made here and kept (a fifth less CPU a
@@ -76,9 +87,10 @@ def event_encoder() -> Callable[[Event], str]:
 def write_jsonl(events: Iterable[Event | MoveRecord], out: TextIO, file: str = "<toolpath>") -> None:
     """One JSON object a line; strict JSON (no ``NaN``/``Infinity``): a non-finite value is an error
     at the event's source line. The text is json's (``postproc.simulate.event_text``, which hands what it
-    does not write itself to json's encoder)."""
+    does not write itself to json's encoder), in ASCII bytes: written to ``out``'s binary buffer where it has one
+    (a file: no encoder's copy of each chunk), else as text."""
     try:
-        write_lines(events, out.write, event_encoder())
+        write_lines(events, _bytes_write(out), event_encoder())
     except EventValueError as err:
         ev = err.event
         bad = ", ".join(k for k, v in ev.items() if isinstance(v, float) and not math.isfinite(v))

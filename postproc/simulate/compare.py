@@ -18,7 +18,7 @@ from .events import MOVES_THE_TOOL, Event
 from .move_record import MoveRecord
 from .normal_move import FEED_TOLERANCE as FEED_TOLERANCE, Move, same_feed as _same_feed  # (public names here too)
 from .points import Steps, beyond, key_index, norm, point_value
-from .runs import Normaliser, normalise as normalise, pull_item
+from .runs import Normaliser, Pulled, normalise as normalise, pull_item
 
 Point = tuple[float, float, float]
 
@@ -62,6 +62,11 @@ class Report:
     chord_where: tuple[int, int] | None = None
     """Source lines (IN, OUT) of the chord furthest from its arc."""
     steps: Steps = field(default_factory=Steps, repr=False, compare=False)
+    keys_in: tuple[str, ...] = field(default=(), repr=False, compare=False)
+    keys_out: tuple[str, ...] = field(default=(), repr=False, compare=False)
+    same_keys: bool = field(default=True, repr=False, compare=False)
+    """The end keys of the pair compared last (one tuple a simulation) and whether they are alike: a pair with the
+    same two tuples takes each axis at its own index, not looked for (``_differ``)."""
     """Where ``_differ`` collects a pair's distances (one for the comparison: no object a pair)."""
 
     @property
@@ -214,9 +219,9 @@ def per_minute_from_first(events: Iterator[Event | MoveRecord], start: dict[str,
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
-class PerMinute:
+class PerMinute(Pulled):
     """``per_minute_from_first``'s iterator: compiled, a generator keeps its locals in an object of its own, read
-    and written at every resume; this keeps three fields."""
+    and written at every resume; this keeps three fields. ``FeedModes`` pulls it (``Pulled``)."""
 
     def __init__(self, events: Iterator[Event | MoveRecord], start: dict[str, float]) -> None:
         self.events = events
@@ -228,27 +233,24 @@ class PerMinute:
         self.last: Event | MoveRecord | None = None
         """The last move passed as it is."""
 
-    def __iter__(self) -> PerMinute:
-        return self
-
-    def __next__(self) -> Event | MoveRecord:
+    def pull(self) -> Event | MoveRecord | None:
         rest = self.rest
         if rest is not None:
-            item = pull_item(rest)
-            if item is None:
-                raise StopIteration
-            return item
+            return pull_item(rest)
         head = self.head
         if head is None:
-            head = _event(next(self.events))
+            first_item = pull_item(self.events)
+            if first_item is None:
+                return None
+            head = _event(first_item)
             if head.get("feed_mode") == "inverse_time":
                 self.rest = per_minute(_controlled(chain((head,), self.events)), self.start)
-                return next(self.rest)
+                return pull_item(self.rest)
             self.head = head
             return head
         ev = pull_item(self.events)  # (stepped natively: compiled, ``next`` is a builtin called through Python)
         if ev is None:
-            raise StopIteration
+            return None
         mode = _feed_mode(ev)
         if mode is not None and mode == "inverse_time":  # (most moves state none: no string comparison)
             last = self.last
@@ -268,7 +270,7 @@ FEED_MODE_EVENT: Final = "feed mode"
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
-class FeedModes:
+class FeedModes(Pulled):
     """A toolpath with a ``feed mode`` event before each feed move whose feed mode (per minute, per revolution) is
     not the previous feed move's, so that the comparison sees a mode change as it sees a spindle or coolant
     event: a move states its mode only where it is not the header's, and a normalised ``Move`` keeps its F but
@@ -276,10 +278,12 @@ class FeedModes:
     ``F100.``) compared equal: F100 per revolution where the source feeds 100 mm/min (issue 29 audit). The header
     passes first (its mode is compared as a header field); rapids state no mode and change none. After
     ``per_minute_from_first``: inverse-time feeds are per minute by then. An iterator object: one more step an
-    event, no generator frame (``PerMinute``)."""
+    event, no generator frame (``PerMinute``), pulled by ``Normaliser`` (``Pulled``)."""
 
     def __init__(self, events: Iterator[Event | MoveRecord]) -> None:
         self.events = events
+        self.source: Pulled | None = events if isinstance(events, Pulled) else None
+        """``events`` where it is ``Pulled`` (``PerMinute``): stepped by its ``pull``."""
         self.started = False
         """The header has passed."""
         self.header = "per_min"
@@ -289,24 +293,24 @@ class FeedModes:
         self.pending: Event | MoveRecord | None = None
         """The feed move after the event just given."""
 
-    def __iter__(self) -> FeedModes:
-        return self
-
-    def __next__(self) -> Event | MoveRecord:
+    def pull(self) -> Event | MoveRecord | None:
         pending = self.pending
         if pending is not None:
             self.pending = None
             return pending
-        item = pull_item(self.events)
+        source = self.source
+        item = source.pull() if source is not None else pull_item(self.events)
         if item is None:
-            raise StopIteration
+            return None
         if not self.started:
             self.started = True
             head = _event(item)
             self.header = str(head.get("feed_mode") or "per_min")
             return item
         mode = _feed_mode(item)
-        if mode != self.stated:  # (most moves state none, as the one before: no event, no look at F)
+        stated = self.stated
+        if mode is not stated and mode != stated:  # (most moves state none, as the one before: no event, no look at
+            # F; identity first: compiled, ``!=`` of None and None was Python's rich comparison, ~90 instructions)
             if isinstance(item, MoveRecord):
                 line: Any = item.line
                 feeds = item.f is not None
@@ -457,15 +461,20 @@ def _differ(a: Move | Event | None, b: Move | Event | None, report: Report) -> s
         if isinstance(a, Move) or isinstance(b, Move) or not _same_event(a, b):
             return f"IN has {describe(a)}, OUT {describe(b)}"
         return None
-    if a.kind != b.kind or a.plane != b.plane:
+    if a.kind != b.kind or a.plane is not b.plane and a.plane != b.plane:  # (identity first: two straight moves' None)
         return f"IN has {describe(a)}, OUT {describe(b)}"
     if not _same_feed(a.f, b.f):
         return f"IN feeds at F{a.f:g}, OUT at F{b.f:g} ({describe(a)})"
     a_keys, a_end, b_keys, b_end = a.end_keys, a.end_values, b.end_keys, b.end_values
     steps = report.steps  # the axes both have (math.dist's norm)
     steps.clear()
+    if a_keys is report.keys_in and b_keys is report.keys_out:
+        same = report.same_keys
+    else:
+        same = a_keys == b_keys
+        report.keys_in, report.keys_out, report.same_keys = a_keys, b_keys, same
     for i in range(len(a_keys)):
-        j = key_index(b_keys, a_keys[i], i)
+        j = i if same else key_index(b_keys, a_keys[i], i)
         if j >= 0:
             steps.add(a_end[i] - b_end[j])
     d0, d1, d2, n, more = steps.d0, steps.d1, steps.d2, steps.n, steps.more

@@ -281,7 +281,19 @@ class CompensatedMoves(Position):
         moved = apart = False
         f: float | int | None = None
         mode: str | None = None
-        for i in range(len(axes)):
+        if kept and not shifted:  # (a mill's CAM move: the loop below, but for the length's axis alone)
+            if length_at >= 0:
+                value = target[length_at]
+                c0 = num(value + offset)
+                crounded[length_at] = c0
+                apart = not isinstance(c0, float) or c0 != value  # (``value`` is as ``num`` writes it: not integral)
+            for i in range(len(axes)):
+                c1: Any = crounded[i]
+                b1: Any = before[i]
+                if c1 is not b1 and differs(c1, b1):
+                    moved = True
+                    break
+        for i in range(len(axes) if not kept or shifted else 0):
             r: Any
             if kept:
                 r = values[i]

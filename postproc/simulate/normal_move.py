@@ -26,12 +26,14 @@ NO_VALUES: Final[list[float]] = []
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
+@mypyc_attr(acyclic=True)
 class Move:
     """A normalised move: possibly several merged moves of one file. A plain class, not a dataclass:
     compiled, a dataclass's ``__init__`` is the one ``dataclasses`` writes, run as Python (about 4,000
     instructions a move of each program; this one is native). ``start`` and ``end`` given as dictionaries
     (a reader that is not hot: ``chords``, tests) fill the fields; ``normalise`` passes None and sets the
-    fields itself."""
+    fields itself. Acyclic (its fields are numbers, strings and their tuples and lists): compiled, not tracked
+    by the cyclic collector, as ``MoveRecord``."""
 
     def __init__(self, kind: str, start: dict[str, float] | None, end: dict[str, float] | None, f: float | None,
                  first_line: int, last_line: int, direction: dict[str, float] | None = None,
@@ -115,4 +117,6 @@ def same_feed(a: float | None, b: float | None) -> bool:
     """Two feeds agree (both absent, or within ``FEED_TOLERANCE`` of each other)."""
     if a is None or b is None:
         return a is b
-    return abs(a - b) <= max(1e-9, FEED_TOLERANCE * max(abs(a), abs(b)))
+    x: float = a  # (each unboxed once: compiled, every use of ``a`` unboxed it again)
+    y: float = b
+    return abs(x - y) <= max(1e-9, FEED_TOLERANCE * max(abs(x), abs(y)))

@@ -118,6 +118,9 @@ class Position:
         self.factors: list[float] = []
         """Per machine axis (in the order of ``axes``), mm of the position per unit of its word (``scale``, a
         diameter's half): ``target`` reads one number an axis word."""
+        self.unit_factors = True
+        """Every factor is 1.0 (mm, no diameter): ``target`` reads none (a factor of the list unboxed, ~30
+        instructions a word)."""
         self.set_scale(1.0)
         if self.lathe:
             self.modal.plane = "ZX"
@@ -238,6 +241,7 @@ class Position:
         shift = self.shift if not machine and not incremental and len(self.shift) else None  # (tested once)
         increments = self.increments if len(self.increments) else None  # empty on a mill: tested once, not a word
         factors = self.factors
+        plain = self.unit_factors and not incremental and shift is None  # a word's float is the point's (``word * 1.0``)
         held: list[Any] = out  # (its items as objects: compiled, a word's float stored as it is, not unboxed and boxed)
         names = self.axes
         found = 0
@@ -251,14 +255,13 @@ class Position:
             if word is None or increments is not None and axis in increments:
                 continue  # (an address that is an increment is the second loop's)
             found += 1
-            factor = factors[i]
             if isinstance(word, float):  # a float first: one type test a word
-                if factor == 1.0 and not incremental and shift is None:
+                if plain or factors[i] == 1.0 and not incremental and shift is None:
                     held[i] = kept  # the word's own float (``word * 1.0`` is it): none made, none freed at the next move
                     continue
             elif isinstance(word, Expr):
                 raise ProgramError(UNEVALUATED, self._at(block, axis))
-            v = word * factor
+            v = word * factors[i]
             out[i] = at[i] + v if incremental else v + shift.get(axis, 0.0) if shift is not None else v
         if found == len(axes):
             return out
@@ -288,6 +291,7 @@ class Position:
         diameter = self.diameter
         self.factors = [(scale if a in LINEAR_AXES else 1.0) * (0.5 if diameter and a == "X" else 1.0)
                         for a in self.axes]
+        self.unit_factors = all(factor == 1.0 for factor in self.factors)
 
     def note_tool_data(self, line: int, kind: str, what: str, value: float) -> None:
         """Record a change of the tool data in force (``tool_data``); the same value again is no change."""

@@ -40,9 +40,19 @@ def _straight(kind: str, start_keys: Keys, start: list[float], keys: Keys, end: 
     m.length = length
     if length > 0:
         n = len(keys)
+        along = 0.0
+        if n == 3:  # (the loop below for three axes: a list made of three, not grown from empty, ~250 instructions)
+            u0 = d0 / length
+            u1 = d1 / length
+            u2 = d2 / length
+            along += d0 * u0
+            along += d1 * u1
+            along += d2 * u2
+            m.unit_keys, m.unit = keys, [u0, u1, u2]
+            m.along = along
+            return m
         unit: list[float] = []  # (appended: compiled, ``[0.0] * n`` is a list repeated through Python, ~200 more)
         rest: list[float] = more if more is not None else NO_STEPS
-        along = 0.0
         for i in range(n):
             # a float local, each step unboxed: compiled, the conditional of a list's item was an object and
             # its division, product and sum three generic calls (~300 instructions an axis)
@@ -147,6 +157,27 @@ def pull_item(events: Iterator[_Item]) -> _Item | None:
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
+class Pulled:
+    """A toolpath stream that gives its next event by a method (``pull``: None at the end), so a compiled reader of
+    it (``Normaliser``, verify's ``FeedModes`` of its ``PerMinute``) steps it by a native call: stepped as an
+    iterator (``pull_item``), each layer cost ~120 instructions an event a side, its ``__iter__`` and ``__next__``
+    called through their slots (callgrind, ``benchmarks/callgrind.sh fanuc verify:linuxcnc 0``, branch tpmove). It
+    is an iterator too, for any other reader."""
+
+    def pull(self) -> Event | MoveRecord | None:
+        raise NotImplementedError
+
+    def __iter__(self) -> Pulled:
+        return self
+
+    def __next__(self) -> Event | MoveRecord:
+        item = self.pull()
+        if item is None:
+            raise StopIteration
+        return item
+
+
+@mypyc_attr(allow_interpreted_subclasses=True)
 class Normaliser:
     """A toolpath's moves merged into runs, machine events as they are, pulled one at a time (``pull``; an
     iterator too); the header is skipped. A move ends at its controlled point where it has one
@@ -157,6 +188,8 @@ class Normaliser:
     def __init__(self, events: Iterator[Event | MoveRecord], start: dict[str, float], eps: float,
                  codes: list[Event] | None = None) -> None:
         self.events = events
+        self.source: Pulled | None = events if isinstance(events, Pulled) else None
+        """``events`` where it is ``Pulled``: stepped by its ``pull``, not as an iterator."""
         self.eps = eps
         self.codes = codes
         self.pos_keys: Keys = tuple(k.lower() for k in start)
@@ -198,9 +231,10 @@ class Normaliser:
             self.pending = None
             return pending
         events = self.events
+        source = self.source
         eps = self.eps
         while True:
-            item = pull_item(events)
+            item = source.pull() if source is not None else pull_item(events)
             if item is None:
                 run = self.run
                 self.run = None
