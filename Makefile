@@ -17,6 +17,11 @@ NATIVE := $(VENV)/.compiled
 # installed into the venv once, so that no pip install below makes a throw-away build environment of its
 # own (two of them on a fresh machine, each fetching mypy) and the compile step starts at once. Built in the
 # venv, setuptools' warning that an editable install is editable would print a box per package: silenced.
+# The editable installs are setuptools' `compat` mode: a `.pth` line naming the checkout, where the default
+# mode installs an import hook per package that every interpreter of the venv runs at start-up (with pathlib,
+# urllib and importlib.util: 52.6M of a bare `python -c pass`'s 92.7M instructions, half its CPU). The peers
+# of `make bench` run in this venv too: with the hooks, their starts carried that cost, which a user's own
+# installation never has (docs/benchmarks.md, "Editable installs").
 TOML = $(PYTHON) -c 'import tomllib; t = tomllib.load(open("pyproject.toml", "rb")); print(" ".join(chr(39) + r + chr(39) for r in $(1)))'
 BUILD_REQUIRES = $(shell $(call TOML,t["build-system"]["requires"]))
 SETUPTOOLS = $(shell $(call TOML,t["build-system"]["requires"] if r.startswith("setuptools")))
@@ -36,7 +41,7 @@ $(RUNTIME): pyproject.toml setup.py $(PLUGINS)
 	start=$$(date +%s) && set -x && \
 	$(PYTHON) -m venv $(VENV) && \
 	$(BIN)/pip install --quiet $(SETUPTOOLS) && \
-	POSTPROC_PURE=1 PYTHONWARNINGS=ignore::UserWarning $(BIN)/pip install --quiet --no-build-isolation -e . $(foreach p,$(PLUGINS),-e $(dir $(p))) && \
+	POSTPROC_PURE=1 PYTHONWARNINGS=ignore::UserWarning $(BIN)/pip install --quiet --no-build-isolation --config-settings editable_mode=compat -e . $(foreach p,$(PLUGINS),-e $(dir $(p))) && \
 	{ set +x; } 2>/dev/null && echo "make: [venv] $(VENV) made in $$(( $$(date +%s) - start )) s"; fi
 	touch $(RUNTIME)
 
@@ -45,7 +50,7 @@ $(STAMP): pyproject.toml setup.py $(PLUGINS)
 	@start=$$(date +%s) && set -x && \
 	$(PYTHON) -m venv $(VENV) && \
 	$(BIN)/pip install --quiet $(BUILD_REQUIRES) && \
-	POSTPROC_PURE=1 PYTHONWARNINGS=ignore::UserWarning $(BIN)/pip install --quiet --no-build-isolation -e '.[test,render,dask]' $(foreach p,$(PLUGINS),-e $(dir $(p))) && \
+	POSTPROC_PURE=1 PYTHONWARNINGS=ignore::UserWarning $(BIN)/pip install --quiet --no-build-isolation --config-settings editable_mode=compat -e '.[test,render,dask]' $(foreach p,$(PLUGINS),-e $(dir $(p))) && \
 	{ set +x; } 2>/dev/null && echo "make: [venv] $(VENV) made in $$(( $$(date +%s) - start )) s"
 	touch $(STAMP) $(RUNTIME)
 
@@ -60,14 +65,14 @@ $(NATIVE): $(STAMP) $(HOT)
 	@start=$$(date +%s); \
 	if [ "$(PGO)" = 1 ]; then \
 	  echo "make: [compile] 1/3 compiling the $(words $(HOT)) hot modules with mypyc, instrumented for a profile: type-checking, then C on $$(nproc) cores (a few minutes; postproc already runs, as pure Python)" && \
-	  POSTPROC_PGO=generate PYTHONWARNINGS=ignore::UserWarning $(BIN)/pip install --quiet --no-deps --no-build-isolation -e . && \
+	  POSTPROC_PGO=generate PYTHONWARNINGS=ignore::UserWarning $(BIN)/pip install --quiet --no-deps --no-build-isolation --config-settings editable_mode=compat -e . && \
 	  echo "make: [compile] 2/3 training the instrumented build on the bench's workloads (benchmarks/pgo_training.py)" && \
 	  $(BIN)/python benchmarks/pgo_training.py && \
 	  echo "make: [compile] 3/3 compiling them again, optimised by the profile" && \
-	  POSTPROC_PGO=use PYTHONWARNINGS=ignore::UserWarning $(BIN)/pip install --quiet --no-deps --no-build-isolation -e .; \
+	  POSTPROC_PGO=use PYTHONWARNINGS=ignore::UserWarning $(BIN)/pip install --quiet --no-deps --no-build-isolation --config-settings editable_mode=compat -e .; \
 	else \
 	  echo "make: [compile] compiling the $(words $(HOT)) hot modules with mypyc: type-checking, then C on $$(nproc) cores (a few minutes; postproc already runs, as pure Python)" && \
-	  PYTHONWARNINGS=ignore::UserWarning $(BIN)/pip install --quiet --no-deps --no-build-isolation -e .; \
+	  PYTHONWARNINGS=ignore::UserWarning $(BIN)/pip install --quiet --no-deps --no-build-isolation --config-settings editable_mode=compat -e .; \
 	fi && echo "make: [compile] compiled in $$(( $$(date +%s) - start )) s: $$($(BIN)/postproc --version)"
 	touch $(NATIVE)
 

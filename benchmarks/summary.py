@@ -24,10 +24,13 @@ instructions (``make callgrind``) gcode-lib's a block over ours a hole >= 0.32. 
 times slower for both (gcode-lib 210,673 blocks/s, quiet, 2026-12-01), where 100,000 holes/s asks 0.47."""
 STARTUP_TARGET_MS = 120.0
 """Start-up: a one-line translation and ``postproc dialects`` under 120 ms (a duration: the wall clock)."""
-STARTUP_TIMES_BARE = 5.2
+STARTUP_TIMES_BARE = 12.0
 """The same target against a bare ``python -c pass`` started in the same run: 120 ms over its 23 ms on the
-quiet development machine of 2026-12-01 (``make bench``'s start-up rows). Stricter than the issue's
-(set on a machine about 1.5 times faster, where the bare start took less), and judged in instructions too."""
+quiet development machine of 2026-12-01 (``make bench``'s start-up rows) was 5.2x. That bare start ran the
+venv's editable-install hooks, which are gone (Makefile): they were 52.6M of its 92.7M instructions
+(``benchmarks/callgrind.sh --program startup fanuc bare 0``, 2026-12-02), so the same machine's bare start is
+now 23 x 40.0 / 92.7 = 9.9 ms, and 120 ms is 12.1x it; 12x is kept. Stricter than the issue's (set on a
+machine about 1.5 times faster, where the bare start took less), and judged in instructions too."""
 RSS_TARGET_MB = 64.0
 FLAT_TARGET = 1.10
 """Peak RSS at the largest size over the smallest: "flat" allows 10 % for ten times the blocks."""
