@@ -468,3 +468,20 @@ def test_a_call_is_read_however_its_code_is_spelt(spelt: str, plain: str) -> Non
     assert ours.sections == theirs.sections | {"Control": ours.sections["Control"]}
     assert ours.get("Control") == theirs.get("Control") and ours.words == theirs.words
     assert ours.text == spelt
+
+
+@settings(max_examples=500, deadline=None)
+@given(st.lists(st.sampled_from(["N10", "G1", "G01", "G65", "G065", "G66", "G67", "G98", "M3", "M98", "M098", "M99",
+                                 "M0099", "M65", "M9", "M0", "G0", "X1.5", "P1000", "L2", "T12", "F100."]),
+                min_size=1, max_size=6))
+def test_a_canonical_lines_call_test_where_its_words_stand_is_makes_calls(words: list[str]) -> None:
+    """The reader asks of a canonical line whose words it leaves unmade (``Block.marks``) whether it may make a
+    call by reading its G and M words where they stand (``_marked_call``): ``makes_call``'s answer on its words."""
+    from dialects.fanuc.call_codes import makes_call
+    from dialects.fanuc.reader import _marked_call
+    from postproc.ir.block import marked_words
+    from postproc.rs274.canonical_line import CANONICAL, scan_marks
+    line = " ".join(words)
+    kind, _, _, marks = scan_marks(line)
+    assume(kind & CANONICAL and marks)
+    assert _marked_call(line, marks) == makes_call(marked_words(line, marks))

@@ -22,6 +22,12 @@ def makes_call(words: list[tuple[str, str]]) -> bool:
     words M98 and G65, so a test on the text (``"M9" in text``) left those calls as plain codes. A word the test
     passes that is no call (``g98``) costs ``read_call`` one look at the block."""
     for letter, num in words:
-        if letter in "GgMm" and num.lstrip("0") in _CALL_NUMBERS:
+        if letter in "GgMm" and calls(num):
             return True
     return False
+
+
+def calls(num: str) -> bool:
+    """Whether a G or M word's number, as written, is a call's or a return's, its leading zeros left out
+    (``makes_call``'s test of a word; the reader asks it of a canonical line's G and M words where they stand)."""
+    return num.lstrip("0") in _CALL_NUMBERS

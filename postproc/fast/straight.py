@@ -171,10 +171,12 @@ class SourceLane(Lane):
         """``write``'s answer as its two pieces, the source line and its end of line (``Batch.write_line``); a
         blank line is left to the writer (False), which checks it, as is a text ``below`` or longer (where not 0)."""
         text = block.text
-        if text is None or not text or text.isspace() or below and len(text) + len(block.eol) >= below \
-                or self.copied(block) is None:
+        if text is None or not block.canonical and (not text or text.isspace()):  # (a canonical line has a word)
             return False
-        out.write_line(text, block.eol)
+        eol = block.eol
+        if below and len(text) + len(eol) >= below or self.copied(block) is None:
+            return False
+        out.write_line(text, eol)
         return True
 
     def copied(self, block: Block) -> str | None:

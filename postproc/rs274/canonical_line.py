@@ -80,21 +80,6 @@ class LineNumbers:
         self.v4 = 0.0
         self.v5 = 0.0
 
-    def put(self, index: i64, value: float) -> None:
-        """Hold ``value`` for the word at ``index`` (below ``MARK_WORDS``)."""
-        if index == 0:
-            self.v0 = value
-        elif index == 1:
-            self.v1 = value
-        elif index == 2:
-            self.v2 = value
-        elif index == 3:
-            self.v3 = value
-        elif index == 4:
-            self.v4 = value
-        else:
-            self.v5 = value
-
     def value(self, index: i64) -> float:
         """The value held for the axis-type word at ``index`` (below ``MARK_WORDS``) of ``text``."""
         if index == 0:
@@ -267,7 +252,18 @@ def _scan(text: str, keep: bool, data: bytes, at: i64,
                     value = float(mantissa) / scale
                     if negative:
                         value = -value
-                numbers.put(count, value)
+                if count == 0:  # (its field stored here: compiled, a store, where a method call cost ~30 a word)
+                    numbers.v0 = value
+                elif count == 1:
+                    numbers.v1 = value
+                elif count == 2:
+                    numbers.v2 = value
+                elif count == 3:
+                    numbers.v3 = value
+                elif count == 4:
+                    numbers.v4 = value
+                else:
+                    numbers.v5 = value
         else:
             if whole == 0:  # a letter without a number
                 return 0, NO_WORDS, -1, 0
