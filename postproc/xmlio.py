@@ -12,12 +12,12 @@ from mypy_extensions import mypyc_attr
 
 import importlib
 import re
-from pathlib import Path
 from typing import TYPE_CHECKING, Any, Callable, ClassVar, Iterator, TypeVar
 
 from .errors import ConfigError, Location
 
 if TYPE_CHECKING:  # annotations only: lxml is imported on first use (lxml_etree)
+    from pathlib import Path  # annotations only: a start makes no path object (pathlib imports urllib.parse)
     from lxml import etree
 
 _etree: Any = None
@@ -118,6 +118,7 @@ def _offset_location(data: bytes, offset: int, file: str) -> Location:
 
 def parse_xml_file(path: str | Path, max_elements: int | None = None,
                    max_bytes: int | None = None) -> etree._Element:
+    from pathlib import Path
     p = Path(path)
     max_bytes = MAX_XML_BYTES if max_bytes is None else max_bytes
     try:
