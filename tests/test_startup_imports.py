@@ -52,14 +52,14 @@ OTHER_DIALECTS = ("dialects.fagor", "dialects.gsk", "dialects.isg", "postproc_gr
 KEEP_CHECK = ("postproc.interp.jump_targets", "postproc.frames.parameters", "postproc.interp.numbers",
               "postproc.interp.returns")
 """What judges whether a program that computes can be kept symbolic for its target (``postproc.api._keep_check``)."""
-NOT_FOR_A_PLAIN_TRANSLATION = ("postproc.transforms.carry", "postproc.transforms.units", "postproc.rs274.lathe_cycles",
+NOT_FOR_A_PLAIN_TRANSLATION = ("postproc.transforms.carry", "postproc.transforms.units", "postproc.transforms.spec", "postproc.rs274.lathe_cycles",
                                "postproc.cycles.turning", "postproc_linuxcnc.block_syntax", "postproc_linuxcnc.program",
                                "postproc.rs274.macro_jumps", "postproc.rs274.lean_controller",
                                "postproc.cycles.lathe_lowering", "postproc.cycles.lathe_offsets",
                                "postproc.rs274.lathe_tool_index", "postproc_linuxcnc.lathe_writer",
                                "postproc.rs274.ngc_lathe_writer", "postproc.rs274.ngc_lathe", "postproc.geometry.thread_lead",
                                "postproc.setup.machine", *KEEP_CHECK)
-"""What a plain mill translation to LinuxCNC has no use for: the program transforms' work (``--transform``,
+"""What a plain mill translation to LinuxCNC has no use for: the program transforms' reading and work (``--transform``,
 ``--units``: ``postproc.transforms.apply``), a lathe's cycle reader and turning cycles (``LatheCycleSyntax`` is
 registered lazily), a lathe's lowering (its cycles' expansion and the turret's index:
 ``postproc.core_plugin``) and writing (LinuxCNC's thread feed step imports it for a lathe only),
@@ -146,7 +146,8 @@ def test_a_plain_translation_loads_no_transform_lathe_or_target_reader(tmp_path:
     ("#1=2.\nG0 X#1 Y[#1+1]\nM30\n", "linuxcnc", (), ("postproc_linuxcnc.block_syntax", "postproc_linuxcnc.program",
                                                       *KEEP_CHECK)),
     ("G0 X1. Y2.\nM30\n", "linuxcnc", ("--units", "inch"), ("postproc.transforms.units",)),
-    ("G0 X1. Y2.\nM30\n", "linuxcnc", ("--transform", "translate 1,2"), ("postproc.transforms.carry",)),
+    ("G0 X1. Y2.\nM30\n", "linuxcnc", ("--transform", "translate 1,2"), ("postproc.transforms.carry",
+                                                                   "postproc.transforms.spec")),
     ("G0 X20. Z2. S500 M3\nG1 Z-10. F0.2\nM30\n", "linuxcnc",
      ("--machine", str(ROOT / "examples/setups/fanuc_0i_tf.xml")),
      ("postproc.rs274.lathe_cycles", "postproc.cycles.lathe_lowering", "postproc_linuxcnc.lathe_writer")),
