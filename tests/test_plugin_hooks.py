@@ -52,8 +52,8 @@ def test_the_markers_set_what_pluggys_set() -> None:
 def _implementation(log: list[tuple[Any, ...]], plugin: int, hook: str, arguments: tuple[str, ...],
                     result: object) -> types.FunctionType:
     """A module-level function of ``arguments`` that logs its call and returns ``result``."""
-    source = f"def {hook}({', '.join(arguments)}):\n    log.append(({plugin}, {hook!r}, ({''.join(a + ', ' for a in arguments)})))\n" \
-             f"    return result\n"
+    logged = "".join(a + ", " for a in arguments)
+    source = f"def {hook}({', '.join(arguments)}):\n    log.append(({plugin}, {hook!r}, ({logged})))\n    return result\n"
     space: dict[str, Any] = {"log": log, "result": result}
     exec(source, space)
     function: types.FunctionType = space[hook]

@@ -52,7 +52,8 @@ OTHER_DIALECTS = ("dialects.fagor", "dialects.gsk", "dialects.isg", "postproc_gr
 KEEP_CHECK = ("postproc.interp.jump_targets", "postproc.frames.parameters", "postproc.interp.numbers",
               "postproc.interp.returns")
 """What judges whether a program that computes can be kept symbolic for its target (``postproc.api._keep_check``)."""
-NOT_FOR_A_PLAIN_TRANSLATION = ("postproc.transforms.carry", "postproc.transforms.units", "postproc.transforms.spec", "postproc.rs274.lathe_cycles",
+NOT_FOR_A_PLAIN_TRANSLATION = ("postproc.transforms.carry", "postproc.transforms.units", "postproc.transforms.spec",
+                               "postproc.rs274.lathe_cycles",
                                "postproc.cycles.turning", "postproc_linuxcnc.block_syntax", "postproc_linuxcnc.program",
                                "postproc.rs274.macro_jumps", "postproc.rs274.lean_controller",
                                "postproc.cycles.lathe_lowering", "postproc.cycles.lathe_offsets",
