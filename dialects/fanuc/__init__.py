@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING, Callable, Iterator
 from postproc.syntaxes.comments import CommentSyntax
 from postproc.compensation.rules import CutterRules
 from postproc.rs274.cutter_rules import FANUC_A, FANUC_B, FANUC_T, FANUC_T_B, HAAS_A, HAAS_B, HAAS_T, HAAS_T_B
+from postproc.cycle_words import CycleWords
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.rs274.cycle_semantics import FANUC as FANUC_CYCLES
 from postproc.setup.machine_setup import MachineSetup
@@ -23,7 +24,6 @@ from postproc.xmlio import XFactory
 from .arguments import LETTER_LOCALS
 
 if TYPE_CHECKING:
-    from postproc.cycle_words import CycleWords
     from postproc.context import Context
     from postproc.ir import Block
 
@@ -47,7 +47,7 @@ class Fanuc(Dialect):
     """Imported when a run first reads Fanuc (``Lazy``), as are the writer and the syntax objects."""
     WRITER = Lazy[type[Writer]](".writer:FanucWriter")
     PIPELINE_FILE = "fanuc.xml"
-    CYCLE_WORDS = Lazy["CycleWords"](".codes:CYCLE_WORDS")  # (its code table, imported where a run reads it)
+    CYCLE_WORDS = Lazy[CycleWords](".codes:CYCLE_WORDS")  # (its code table, imported where a run reads it)
     """R level, Q peck/shift, P dwell (ms); K, L or K+L repeats (0-9999) per the set-up; cycles named
     G73-G89."""
     NATIVE_CYCLES = ALL_MILLING_CYCLES

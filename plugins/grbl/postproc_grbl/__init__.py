@@ -34,6 +34,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Callable, ClassVar
 
 from postproc.syntaxes.comments import CommentSyntax
+from postproc.cycle_words import CycleWords
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.grbl_family.dialect import GrblFamily
 from postproc.hookspecs import hookimpl
@@ -46,7 +47,6 @@ from postproc.xmlio import XFactory
 
 
 if TYPE_CHECKING:
-    from postproc.cycle_words import CycleWords
     from postproc.context import Context
 
 
@@ -67,7 +67,7 @@ class Grbl(GrblFamily):
     """Imported when a run first reads grbl (``Lazy``), as are the writer and the block syntax."""
     WRITER = Lazy[type[Writer]](".writer:GrblWriter")
     PIPELINE_FILE = "grbl.xml"
-    CYCLE_WORDS = Lazy["CycleWords"](".codes:CYCLE_WORDS")  # (its code table, imported where a run reads it)
+    CYCLE_WORDS = Lazy[CycleWords](".codes:CYCLE_WORDS")  # (its code table, imported where a run reads it)
     """R level, Q peck/shift, P dwell (seconds), L repeats."""
     NATIVE_CYCLES = frozenset()
     """No canned cycles: every cycle is expanded to G0/G1/G4/M3/M4/M5."""

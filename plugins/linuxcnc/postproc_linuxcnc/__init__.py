@@ -12,9 +12,10 @@ run as rs274 runs them (``postproc.interp.rules``).
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Callable, ClassVar
+from typing import Callable, ClassVar
 
 from postproc.rs274.cutter_rules import ARC_CORNERS
+from postproc.cycle_words import CycleWords
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.rs274.cycle_semantics import RS274 as RS274_CYCLES
 from postproc.rs274.order_of_execution import stops_after_motion
@@ -33,9 +34,6 @@ from postproc.xmlio import XFactory
 
 
 from .active_comments import COMMENTS, warn_active_comments
-
-if TYPE_CHECKING:
-    from postproc.cycle_words import CycleWords
 
 nest_forward_jumps = LazyStep("postproc.lowering.structured_jumps:nest_forward_jumps")
 
@@ -66,7 +64,7 @@ class Linuxcnc(Dialect):
     PIPELINE_FILE = "linuxcnc.xml"
     LATHE_PIPELINE_FILE = "linuxcnc_lathe.xml"
     """A lathe's: its block step follows the G70-G72 cycles' profiles (``block_syntax.NgcLatheBlockSyntax``)."""
-    CYCLE_WORDS = Lazy["CycleWords"](".codes:CYCLE_WORDS")  # (its code table, imported where a run reads it)
+    CYCLE_WORDS = Lazy[CycleWords](".codes:CYCLE_WORDS")  # (its code table, imported where a run reads it)
     """R level, Q peck/shift, P dwell (seconds), L repeats."""
     NATIVE_CYCLES = NATIVE
     """G73, G74, G81-G86, G89. Not G76 (threading here), G87/G88 (RS274/NGC words and motion), and
