@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import copy
 import io
-from typing import Callable, Iterable, Iterator, TextIO
+from typing import TYPE_CHECKING, Callable, Iterable, Iterator, TextIO
 
 from . import native
 native.install()  # the compiled hot path, before any of its modules is imported
@@ -30,7 +30,10 @@ from .syntaxes.syntax import Pipeline
 from .context import Context
 from .frames.lowering import EVALUATE_KEY
 from .patterns.lowering import POINT_BY_POINT_KEY
-from .transforms import ProgramOptions, ProgramTransform, program_options, transform_program
+from .transforms import ProgramOptions, program_options, transform_program
+
+if TYPE_CHECKING:
+    from .transforms.spec import ProgramTransform
 
 
 

@@ -8,7 +8,6 @@ from them (``postproc.lowering.lower``).
 from __future__ import annotations
 
 import abc
-from pathlib import Path
 from typing import TYPE_CHECKING, Callable, ClassVar, Generic, Iterable, Iterator, Mapping, Protocol, TypeVar, cast
 
 from .geometry.arc_end import NEUTRAL_ARC_END, ArcEndRule
@@ -24,6 +23,8 @@ from .syntaxes.power_on_units import KEY as POWER_ON_UNITS
 from .output.writer_base import Writer as Writer
 
 if TYPE_CHECKING:
+    from pathlib import Path  # (annotations; imported where a path is made: a start makes none, and pathlib
+    # brings urllib.parse and ipaddress)
     from .compensation.rules import CutterRules
 
 
@@ -406,6 +407,7 @@ class Dialect:
         module = cls.__module__
         package = module if _is_package(module) else module.rpartition(".")[0]
         beside = _package_folder(package)
+        from pathlib import Path
         if beside is not None:
             return load_pipeline(beside / name)
         from importlib import resources  # a package inside a zip file: its data is extracted
@@ -466,6 +468,7 @@ def _package_folder(package: str) -> Path | None:
     """The folder of a package imported from files (its data files lie beside its modules), without
     importing ``importlib.resources`` (a tenth of a one-line translation's start-up); None otherwise."""
     import sys
+    from pathlib import Path
     mod = sys.modules.get(package)
     paths = list(getattr(mod, "__path__", ()))
     if len(paths) == 1 and Path(paths[0]).is_dir():

@@ -23,8 +23,10 @@ import os
 import stat
 import sys
 import time
-from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from os import PathLike
 
 SETTLE = 2.0
 """Seconds a key's newest time must lie in the past before the answer is cached under it."""
@@ -36,14 +38,14 @@ EntryPoints = list[tuple[str, str]]
 """(name, value) of each entry point of a group, in discovery order (``importlib.metadata``'s)."""
 
 
-def entry_points(group: str, cache_dir: Path | None = None, settle: float = SETTLE) -> EntryPoints:
+def entry_points(group: str, cache_dir: str | PathLike[str] | None = None, settle: float = SETTLE) -> EntryPoints:
     """The group's entry points: from the cache while its key holds, else discovered (and cached once
     every time in the key is ``settle`` seconds old)."""
     if os.environ.get("POSTPROC_NO_ENTRY_POINT_CACHE") == "1" or not _standard_finders():
         return discover(group)
     key, newest = installation_key()
     head = f"postproc entry points {VERSION}\n{key!r}\n"
-    path = (cache_dir or _cache_dir()) / f"entry-points-{_interpreter_id()}-{group}.txt"
+    path = os.path.join(cache_dir or cache_folder(), f"entry-points-{_interpreter_id()}-{group}.txt")
     cached = _read(path)
     if cached is not None and cached.startswith(head):
         return [(name, value) for name, _, value in (line.partition("=") for line in cached[len(head):].splitlines())]
@@ -136,26 +138,27 @@ def cache_folder() -> str:
     return os.path.join(base, "postproc")
 
 
-def _cache_dir() -> Path:
-    return Path(cache_folder())
-
-
-def _read(path: Path) -> str | None:
+def _read(path: str) -> str | None:
+    """The file's text (paths as strings, ``os.path``: a start makes no ``pathlib`` object, whose module imports
+    ``urllib.parse`` and ``ipaddress``)."""
     try:
-        return path.read_text(encoding="utf-8")
+        with open(path, encoding="utf-8") as f:
+            return f.read()
     except (OSError, ValueError):
         return None
 
 
-def _write(path: Path, data: str) -> None:
+def _write(path: str, data: str) -> None:
     """Written whole or not at all (a temporary file renamed), so a parallel run never reads half."""
-    tmp = path.with_name(f".{path.name}.{os.getpid()}")
+    folder, name = os.path.split(path)
+    tmp = os.path.join(folder, f".{name}.{os.getpid()}")
     try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        tmp.write_text(data, encoding="utf-8")
+        os.makedirs(folder, exist_ok=True)
+        with open(tmp, "w", encoding="utf-8") as f:
+            f.write(data)
         os.replace(tmp, path)
     except OSError:
         try:
-            tmp.unlink()
+            os.unlink(tmp)
         except OSError:
             pass

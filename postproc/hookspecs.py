@@ -2,13 +2,17 @@
 
 Built-in dialects register through these same hooks, from the same entry-point group (``postproc``),
 as any third-party plugin.
+
+``hookspec`` and ``hookimpl`` are pluggy's markers, written here: each sets on the function the attribute
+pluggy's ``HookspecMarker``/``HookimplMarker`` of the project would, with the same options, so a plugin module
+imports neither pluggy nor its ``inspect`` (about a tenth of a one-line translation's start-up, callgrind); the
+registry's manager is pluggy's all the same (``postproc.plugin_manager``), unless the fast lane calls the hooks
+(``postproc.fast.plugin_hooks``). ``tests/test_plugins.py`` holds them to pluggy's markers.
 """
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Callable
-
-import pluggy
+from typing import TYPE_CHECKING, Any, Callable, Mapping, TypeVar, overload
 
 from .xmlio import XFactory
 
@@ -16,8 +20,74 @@ if TYPE_CHECKING:
     from .lowering.lower import Lowering
     from .setup.machine_setup import SetupGroup
 
-hookspec = pluggy.HookspecMarker("postproc")
-hookimpl = pluggy.HookimplMarker("postproc")
+PROJECT = "postproc"
+"""The project name of the markers and of the entry-point group."""
+
+_F = TypeVar("_F", bound=Callable[..., Any])
+
+
+class HookspecMarker:
+    """pluggy's ``HookspecMarker``: ``@hookspec`` or ``@hookspec(firstresult=True, ...)`` sets
+    ``<project>_spec`` on the function to the options' dictionary."""
+
+    __slots__ = ("project_name",)
+
+    def __init__(self, project_name: str) -> None:
+        self.project_name = project_name
+
+    @overload
+    def __call__(self, function: _F, firstresult: bool = False, historic: bool = False,
+                 warn_on_impl: Warning | None = None, warn_on_impl_args: Mapping[str, Warning] | None = None) -> _F: ...
+    @overload
+    def __call__(self, function: None = None, firstresult: bool = False, historic: bool = False,
+                 warn_on_impl: Warning | None = None,
+                 warn_on_impl_args: Mapping[str, Warning] | None = None) -> Callable[[_F], _F]: ...
+
+    def __call__(self, function: _F | None = None, firstresult: bool = False, historic: bool = False,
+                 warn_on_impl: Warning | None = None,
+                 warn_on_impl_args: Mapping[str, Warning] | None = None) -> _F | Callable[[_F], _F]:
+        def mark(func: _F) -> _F:
+            if historic and firstresult:
+                raise ValueError("cannot have a historic firstresult hook")
+            setattr(func, self.project_name + "_spec", {"firstresult": firstresult, "historic": historic,
+                                                        "warn_on_impl": warn_on_impl,
+                                                        "warn_on_impl_args": warn_on_impl_args})
+            return func
+
+        return mark(function) if function is not None else mark
+
+
+class HookimplMarker:
+    """pluggy's ``HookimplMarker``: ``@hookimpl`` or ``@hookimpl(tryfirst=True, ...)`` sets ``<project>_impl``
+    on the function to the options' dictionary."""
+
+    __slots__ = ("project_name",)
+
+    def __init__(self, project_name: str) -> None:
+        self.project_name = project_name
+
+    @overload
+    def __call__(self, function: _F, hookwrapper: bool = False, optionalhook: bool = False, tryfirst: bool = False,
+                 trylast: bool = False, specname: str | None = None, wrapper: bool = False) -> _F: ...
+    @overload
+    def __call__(self, function: None = None, hookwrapper: bool = False, optionalhook: bool = False,
+                 tryfirst: bool = False, trylast: bool = False, specname: str | None = None,
+                 wrapper: bool = False) -> Callable[[_F], _F]: ...
+
+    def __call__(self, function: _F | None = None, hookwrapper: bool = False, optionalhook: bool = False,
+                 tryfirst: bool = False, trylast: bool = False, specname: str | None = None,
+                 wrapper: bool = False) -> _F | Callable[[_F], _F]:
+        def mark(func: _F) -> _F:
+            setattr(func, self.project_name + "_impl", {"wrapper": wrapper, "hookwrapper": hookwrapper,
+                                                        "optionalhook": optionalhook, "tryfirst": tryfirst,
+                                                        "trylast": trylast, "specname": specname})
+            return func
+
+        return mark(function) if function is not None else mark
+
+
+hookspec = HookspecMarker(PROJECT)
+hookimpl = HookimplMarker(PROJECT)
 
 
 @hookspec

@@ -24,15 +24,17 @@ import os
 import stat
 import sys
 from importlib.machinery import ModuleSpec
-from pathlib import Path
 from types import ModuleType
-from typing import Mapping, Sequence
+from typing import TYPE_CHECKING, Mapping, Sequence
 
 from .source_finder import SourceFinder
 
+if TYPE_CHECKING:
+    from pathlib import Path  # (made where asked for: a start makes no path object, and pathlib imports urllib.parse)
+
 _ROOT = os.path.dirname(os.path.dirname(os.path.realpath(__file__)))
-ROOT = Path(_ROOT)
-"""The folder that holds ``postproc/`` and ``dialects/`` (site-packages, or the checkout when editable)."""
+"""The folder that holds ``postproc/`` and ``dialects/`` (site-packages, or the checkout when editable); as a
+``pathlib.Path``, ``ROOT``."""
 
 PURE_VARIABLE = "POSTPROC_PURE"
 
@@ -111,6 +113,7 @@ def _fresh(path: str, entry: Compiled) -> bool:
 def plan(root: Path, environ: Mapping[str, str]) -> tuple[str, dict[str, Path]]:
     """Why pure Python runs (or ``""``), and the compiled files by module name, for the installation
     in ``root`` (the folder holding ``postproc/``)."""
+    from pathlib import Path
     reason, files = _plan(str(root), environ)
     return reason, {name: Path(file) for name, file in files.items()}
 
@@ -194,3 +197,11 @@ def describe() -> str:
     if _FILES:
         return f"compiled (mypyc): {len(compiled_modules())} hot modules"
     return f"pure Python ({_REASON})"
+
+
+def __getattr__(name: str) -> Path:
+    """``ROOT``: the folder that holds ``postproc/`` and ``dialects/``, a ``pathlib.Path`` made when first read."""
+    if name == "ROOT":
+        from pathlib import Path
+        return Path(_ROOT)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

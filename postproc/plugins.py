@@ -6,15 +6,11 @@ Nothing here names a concrete dialect; built-ins arrive through their entry poin
 from __future__ import annotations
 
 import functools
-import types
-from typing import Iterable
-
-import pluggy
+from typing import TYPE_CHECKING, Any, Callable, Iterable, Protocol
 
 from . import native
 native.install()  # the compiled hot path, before any of its modules is imported
 
-from . import hookspecs
 from .collector import gc_paused
 from .interp.control import register_control
 from .dialect import Dialect
@@ -25,15 +21,36 @@ from .ir.expr import register_expressions
 from .ir import register_sections
 from .lowering.lower import Lowering, register_transform
 from .setup.machine_setup import SetupGroup, builtin_groups
+from .hookspecs import PROJECT as PROJECT
 from .xmlio import DEFAULT, XFactory
+
+if TYPE_CHECKING:
+    import pluggy
 
 RESERVED_SETUP_TAGS = frozenset(("Templates", "Library", "MachineCodes", "CodeCall", "Axes", "WorkOffsets", "Tools"))
 """Set-up elements that are not groups: no plugin group may take their names."""
 
-PROJECT = "postproc"
+CORE = "postproc.core"
+"""The name the core's own plugin (``postproc.core_plugin``) is registered by, before the entry points'."""
 
 
-def collect_dialects(pm: pluggy.PluginManager) -> dict[str, type[Dialect]]:
+class Hooks(Protocol):
+    """What the registry calls the plugins' hooks through, ``hook.NAME(**arguments)``: pluggy's manager
+    (``postproc.plugin_manager``), or the fast lane's plain calls (``postproc.fast.plugin_hooks``)."""
+
+    @property
+    def hook(self) -> Any: ...
+
+
+Plugins = list[tuple[str, object]]
+"""The plugins by name, in the order they are registered."""
+
+HOOKS_LANE: Callable[[Plugins], Hooks | None] | None = None
+"""The fast lane's calls of the installed plugins' hooks (``postproc.fast.plugin_hooks.install``, by the command's
+process), or None where it cannot tell that they are pluggy's: the registry then makes pluggy's manager."""
+
+
+def collect_dialects(pm: Hooks) -> dict[str, type[Dialect]]:
     """Name -> dialect class, from every plugin's ``postproc_register_dialects``: each a named ``Dialect``,
     no name given to two classes."""
     dialects: dict[str, type[Dialect]] = {}
@@ -53,7 +70,7 @@ def collect_dialects(pm: pluggy.PluginManager) -> dict[str, type[Dialect]]:
 class Registry:
     """Dialects and XML node classes contributed by the loaded plugins."""
 
-    def __init__(self, pm: pluggy.PluginManager, factory: XFactory) -> None:
+    def __init__(self, pm: Hooks, factory: XFactory) -> None:
         self.pm = pm
         self.factory = factory
         self.lowerings: list[Lowering] = []
@@ -89,46 +106,35 @@ class Registry:
             raise UsageError(f"unknown dialect {name!r} (installed: {known})") from None
 
 
-class PluginManager(pluggy.PluginManager):
-    """pluggy's manager, with its scan of a module for hook implementations cut short where pluggy's answer is
-    already known: pluggy looks up every name of a plugin module (each name it imports: ~400 over the
-    installed plugins) with ``inspect.getattr_static``, ~1.5 ms of every start (pure build, cProfile). A
-    module's names are its dictionary's (``dir``); a value that is not a function or method (a class, a
-    module, a constant) is no implementation for pluggy, nor a plain function without the project's marker
-    (pluggy's ``_get_marker_opts`` reads the same attribute). Everything else goes to pluggy as before
-    (``parse_hookimpl_opts`` is pluggy's documented override point)."""
-
-    def parse_hookimpl_opts(self, plugin: object, name: str) -> pluggy.HookimplOpts | None:
-        if isinstance(plugin, types.ModuleType):
-            value = vars(plugin).get(name)
-            if not isinstance(value, _HOOKABLE):
-                return None
-            if isinstance(value, types.FunctionType) and getattr(value, _MARKER, None) is None:
-                return None
-        return super().parse_hookimpl_opts(plugin, name)
-
-
-_HOOKABLE = (types.FunctionType, types.MethodType, staticmethod, classmethod)
-"""What pluggy takes a hook implementation from (``pluggy._manager._static_hook_attr``)."""
-_MARKER = PROJECT + "_impl"
-"""The attribute ``hookimpl`` sets on what it marks (pluggy: the project name + ``_impl``)."""
+def installed_plugins(entry_points: bool = True) -> Plugins:
+    """The core's plugin, then (unless ``entry_points`` is False) each installed entry point's, loaded: pluggy's
+    ``load_setuptools_entrypoints``, with the discovery remembered between runs (``postproc.entry_points``); the
+    same order, and the first plugin of a name wins as there."""
+    from . import core_plugin
+    found: Plugins = [(CORE, core_plugin)]
+    if entry_points:
+        names = {CORE}
+        for name, value in installed_entry_points(PROJECT):
+            if name not in names:
+                names.add(name)
+                found.append((name, load_entry_point(value)))
+    return found
 
 
 def make_plugin_manager(extra: Iterable[object] = (), entry_points: bool = True) -> pluggy.PluginManager:
-    pm = PluginManager(PROJECT)
-    pm.add_hookspecs(hookspecs)
-    from . import core_plugin
-    pm.register(core_plugin, name="postproc.core")
-    if entry_points:
-        # pluggy's load_setuptools_entrypoints, with the discovery remembered between runs
-        # (postproc.entry_points); the same order, and the first plugin of a name wins as there
-        for name, value in installed_entry_points(PROJECT):
-            if not (pm.has_plugin(name) or pm.is_blocked(name)):
-                pm.register(load_entry_point(value), name=name)
-    for plugin in extra:
-        pm.register(plugin)
-    pm.check_pending()
-    return pm
+    """pluggy's manager of the installed plugins (``installed_plugins``) and ``extra``."""
+    from .plugin_manager import manager_of
+    return manager_of(installed_plugins(entry_points), extra)
+
+
+def _installed_hooks() -> Hooks:
+    """The installed plugins' hooks: the fast lane's calls where it takes them (``HOOKS_LANE``), else pluggy's."""
+    plugins = installed_plugins()
+    lane = HOOKS_LANE(plugins) if HOOKS_LANE is not None else None
+    if lane is not None:
+        return lane
+    from .plugin_manager import manager_of
+    return manager_of(plugins)
 
 
 def installed_dialects() -> dict[str, type[Dialect]]:
@@ -138,7 +144,7 @@ def installed_dialects() -> dict[str, type[Dialect]]:
     if default_registry.cache_info().currsize:
         return default_registry().dialects
     with gc_paused():
-        return collect_dialects(make_plugin_manager())
+        return collect_dialects(_installed_hooks())
 
 
 @functools.cache
@@ -151,7 +157,7 @@ def default_registry() -> Registry:
         register_sections(DEFAULT)
         register_expressions(DEFAULT)
         register_control(DEFAULT)
-        registry = Registry(make_plugin_manager(), DEFAULT)
+        registry = Registry(_installed_hooks(), DEFAULT)
         for step in registry.lowerings:
             register_transform(step)
     return registry

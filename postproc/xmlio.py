@@ -12,12 +12,12 @@ from mypy_extensions import mypyc_attr
 
 import importlib
 import re
-from pathlib import Path
 from typing import TYPE_CHECKING, Any, Callable, ClassVar, Iterator, TypeVar
 
 from .errors import ConfigError, Location
 
 if TYPE_CHECKING:  # annotations only: lxml is imported on first use (lxml_etree)
+    from pathlib import Path  # annotations only: a start makes no path object (pathlib imports urllib.parse)
     from lxml import etree
 
 _etree: Any = None
@@ -56,8 +56,6 @@ MAX_ATTRIBUTES = 64
 quadratic time, so 200,000 of them took minutes before any check could run."""
 MAX_VALUE_CHARS = 1 << 20
 """Characters of one attribute value or text (a template renders at most as much)."""
-
-T = TypeVar("T", bound="XmlNode")
 
 
 def parse_xml_bytes(data: bytes, file: str, max_elements: int | None = None,
@@ -118,6 +116,7 @@ def _offset_location(data: bytes, offset: int, file: str) -> Location:
 
 def parse_xml_file(path: str | Path, max_elements: int | None = None,
                    max_bytes: int | None = None) -> etree._Element:
+    from pathlib import Path
     p = Path(path)
     max_bytes = MAX_XML_BYTES if max_bytes is None else max_bytes
     try:
@@ -435,3 +434,8 @@ class XmlNode:
     def __repr__(self) -> str:
         inner = ", ".join(f"{a.name}={getattr(self, a.name)!r}" for a in self.xattrs())
         return f"{type(self).__name__}({inner})"
+
+
+T = TypeVar("T", bound=XmlNode)
+"""(After the class, bound to it as a class: a bound given by its name is a ``ForwardRef``, which compiles the name
+with the interpreter's compiler at import, ~2M instructions of every start.)"""

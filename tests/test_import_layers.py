@@ -43,7 +43,7 @@ LAYERS: tuple[tuple[str, tuple[str, ...], str], ...] = (
      "translation transforms): reading and writing"),
     ("family bases", ("rs274", "isg_family", "grbl_family"),
      "the only place a controller family's words are spelled: the resolution layer"),
-    ("registry", ("hookspecs", "core_plugin", "plugins"),
+    ("registry", ("hookspecs", "core_plugin", "plugin_manager", "plugins"),
      "the plugin hooks, the core's own registrations and the registry of dialects: the family bases"),
     ("fast lane", ("fast",),
      "speed-only shortcuts chosen per run, held to the general path by differential tests: the registry"),

@@ -358,14 +358,14 @@ def test_example_plugin_reads_its_own_programs(cli):
 
 
 def test_the_managers_scan_finds_what_pluggys_finds():
-    """``postproc.plugins.PluginManager`` cuts pluggy's scan of a module short: on every installed plugin module
+    """``postproc.plugin_manager.PluginManager`` cuts pluggy's scan of a module short: on every installed plugin module
     (and a toy one with a marked function, a misspelt marked one, a static method and a class), for every name,
     it answers as pluggy's own ``parse_hookimpl_opts``."""
     import types
 
     from postproc import core_plugin
     from postproc.entry_points import entry_points as installed, load
-    from postproc.plugins import PluginManager
+    from postproc.plugin_manager import PluginManager
 
     toy = types.ModuleType("toy_plugin")
     exec("from postproc.hookspecs import hookimpl\n"

@@ -34,11 +34,17 @@ module of its own that a run might not: json is one the runs must not load)."""
 NEVER_BY_DEFAULT = ("pydantic", "pydantic_core", "annotated_types", "jinja2", "dask", "distributed", "PIL",
                     "postproc.setup.validate", "postproc.setup.load", "postproc.output.templates", "postproc.commands.batch.command",
                     "postproc.commands.batch.local", "postproc.commands.batch.cluster", "postproc.simulate.toolpath", "postproc.simulate.verify",
-                    "postproc.drawing.backplot", "postproc.drawing.canvas", "postproc.commands.export")
-NOT_AT_START = ("decimal", "threading", "tempfile", "shutil", "random", "bz2", "lzma", "json", "signal", "zlib")
+                    "postproc.drawing.backplot", "postproc.drawing.canvas", "postproc.commands.export", "pluggy",
+                    "postproc.plugin_manager")
+NOT_AT_START = ("decimal", "threading", "tempfile", "shutil", "random", "bz2", "lzma", "json", "signal", "zlib",
+                "ast", "dis", "tokenize")
 """Standard modules imported where they are used (a top-level import of one of them fails here); ``signal`` and
 ``zlib`` are never: the command line sets its handlers through ``signal``'s C core (``postproc.commands.cli``),
-and the entry-point cache names its file without a CRC (``postproc.entry_points``)."""
+and the entry-point cache names its file without a CRC (``postproc.entry_points``); nor ``inspect``, seen here by
+what it imports (``ast``, ``dis``, ``tokenize``: the name ``inspect`` stands in ``sys.modules`` from the start,
+``postproc.commands.launch``): ``dataclasses`` imports it when it first reads a name of it, which it does for a
+dataclass without a docstring (every one of ours has one), and the registry calls the plugins' hooks without
+pluggy, which imports it (``postproc.fast.plugin_hooks``)."""
 ONLY_FOR_XML = ("lxml",)
 OTHER_DIALECTS = ("dialects.fagor", "dialects.gsk", "dialects.isg", "postproc_grbl", "postproc_grblhal",
                   "postproc_linuxcnc", "postproc_mach3")
@@ -46,24 +52,26 @@ OTHER_DIALECTS = ("dialects.fagor", "dialects.gsk", "dialects.isg", "postproc_gr
 KEEP_CHECK = ("postproc.interp.jump_targets", "postproc.frames.parameters", "postproc.interp.numbers",
               "postproc.interp.returns")
 """What judges whether a program that computes can be kept symbolic for its target (``postproc.api._keep_check``)."""
-NOT_FOR_A_PLAIN_TRANSLATION = ("postproc.transforms.carry", "postproc.transforms.units", "postproc.rs274.lathe_cycles",
+NOT_FOR_A_PLAIN_TRANSLATION = ("postproc.transforms.carry", "postproc.transforms.units", "postproc.transforms.spec",
+                               "postproc.rs274.lathe_cycles",
                                "postproc.cycles.turning", "postproc_linuxcnc.block_syntax", "postproc_linuxcnc.program",
                                "postproc.rs274.macro_jumps", "postproc.rs274.lean_controller",
                                "postproc.cycles.lathe_lowering", "postproc.cycles.lathe_offsets",
                                "postproc.rs274.lathe_tool_index", "postproc_linuxcnc.lathe_writer",
                                "postproc.rs274.ngc_lathe_writer", "postproc.rs274.ngc_lathe", "postproc.geometry.thread_lead",
-                               *KEEP_CHECK)
-"""What a plain mill translation to LinuxCNC has no use for: the program transforms' work (``--transform``,
+                               "postproc.setup.machine", *KEEP_CHECK)
+"""What a plain mill translation to LinuxCNC has no use for: the program transforms' reading and work (``--transform``,
 ``--units``: ``postproc.transforms.apply``), a lathe's cycle reader and turning cycles (``LatheCycleSyntax`` is
 registered lazily), a lathe's lowering (its cycles' expansion and the turret's index:
 ``postproc.core_plugin``) and writing (LinuxCNC's thread feed step imports it for a lathe only),
 the target's reading side and what judges a program that computes (its block syntax and program step: the keep check and
 ``TARGET_OMITS_VACANT`` build the target's pipeline when a program that computes first asks, ``postproc.api``),
-and the lowering steps of other targets that registering their dialects named (Fanuc's ``number_jumps``, grbl's
-and grblHAL's lean-controller steps: each imported when a translation first lowers for that target)."""
-REGISTERED_ONLY = ("codes", "cycle_words", "active_comments")
-"""What registering a dialect imports besides its package: its code table and cycle words (the capability
-table names them) and LinuxCNC's generic lowering step."""
+the lowering steps of other targets that registering their dialects named (Fanuc's ``number_jumps``, grbl's
+and grblHAL's lean-controller steps: each imported when a translation first lowers for that target), and the
+machine's geometry of a set-up (``postproc.setup.machine``: a set-up file's axes, work offsets and tools)."""
+REGISTERED_ONLY = ("active_comments",)
+"""What registering a dialect imports besides its package: LinuxCNC's generic lowering step. (Not its code table
+nor its cycle words: ``Dialect.CYCLE_WORDS`` is ``Lazy``, imported where a run reads that dialect's.)"""
 
 
 def modules_after(tmp_path: Path, *args: str) -> set[str]:
@@ -139,7 +147,8 @@ def test_a_plain_translation_loads_no_transform_lathe_or_target_reader(tmp_path:
     ("#1=2.\nG0 X#1 Y[#1+1]\nM30\n", "linuxcnc", (), ("postproc_linuxcnc.block_syntax", "postproc_linuxcnc.program",
                                                       *KEEP_CHECK)),
     ("G0 X1. Y2.\nM30\n", "linuxcnc", ("--units", "inch"), ("postproc.transforms.units",)),
-    ("G0 X1. Y2.\nM30\n", "linuxcnc", ("--transform", "translate 1,2"), ("postproc.transforms.carry",)),
+    ("G0 X1. Y2.\nM30\n", "linuxcnc", ("--transform", "translate 1,2"), ("postproc.transforms.carry",
+                                                                   "postproc.transforms.spec")),
     ("G0 X20. Z2. S500 M3\nG1 Z-10. F0.2\nM30\n", "linuxcnc",
      ("--machine", str(ROOT / "examples/setups/fanuc_0i_tf.xml")),
      ("postproc.rs274.lathe_cycles", "postproc.cycles.lathe_lowering", "postproc_linuxcnc.lathe_writer")),

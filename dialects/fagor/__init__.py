@@ -15,6 +15,7 @@ from postproc.context import Context
 from postproc.syntaxes.comments import CommentSyntax
 from postproc.geometry.arc_end import NEAREST_CENTRE, ArcEndRule
 from postproc.ir.state import MM_PER_INCH
+from postproc.cycle_words import CycleWords
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.rs274.cycle_semantics import FANUC as FANUC_CYCLES
 from postproc.errors import Diagnostics
@@ -28,8 +29,6 @@ from postproc.xmlio import XFactory
 
 if TYPE_CHECKING:
     from postproc.ir import Block
-
-from .cycle_words import SECONDS, cycle_words
 
 
 class _SelectToolData(LoweringStep):
@@ -109,7 +108,7 @@ class Fagor(Dialect):
     ISG family's lexer and expressions, and multiple machining)."""
     WRITER = Lazy[type[Writer]](".writer:FagorWriter")
     PIPELINE_FILE = "fagor.xml"
-    CYCLE_WORDS = SECONDS
+    CYCLE_WORDS = Lazy[CycleWords](".cycle_words:SECONDS")
     """Z reference plane, I depth, K dwell (seconds; the set-up's ``fagorDwellUnit`` may say hundredths)."""
     NATIVE_CYCLES = frozenset({"drill", "drill_dwell", "bore_feed", "bore_dwell_feed"})
     """G81 (drilling, dwell K) and G89 (boring, dwell K, feed out) [K]; Fanuc's G81/G85 are written as them
@@ -165,6 +164,7 @@ class Fagor(Dialect):
 
     @classmethod
     def context(cls, file: str, setup: MachineSetup, diagnostics: Diagnostics) -> Context:
+        from .cycle_words import cycle_words  # (a run's, read from Fagor: not at registration)
         ctx = super().context(file, setup, diagnostics)
         ctx.cycle_words = cycle_words(setup)
         return ctx

@@ -9,12 +9,12 @@ from typing import TYPE_CHECKING, Callable, Iterator
 from postproc.syntaxes.comments import CommentSyntax
 from postproc.compensation.rules import CutterRules
 from postproc.rs274.cutter_rules import FANUC_A, FANUC_B, FANUC_T, FANUC_T_B, HAAS_A, HAAS_B, HAAS_T, HAAS_T_B
+from postproc.cycle_words import CycleWords
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.rs274.cycle_semantics import FANUC as FANUC_CYCLES
 from postproc.setup.machine_setup import MachineSetup
 from postproc.syntaxes.syntax import Pipeline
 from postproc.hookspecs import hookimpl
-from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.rs274.arc_ends import FANUC_ARC_END
 from postproc.rs274.lathe_axes import LATHE_INCREMENTS
 from postproc.rs274.order_of_execution import stops_before_motion
@@ -22,7 +22,6 @@ from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
 
 from .arguments import LETTER_LOCALS
-from .codes import CODES
 
 if TYPE_CHECKING:
     from postproc.context import Context
@@ -48,7 +47,7 @@ class Fanuc(Dialect):
     """Imported when a run first reads Fanuc (``Lazy``), as are the writer and the syntax objects."""
     WRITER = Lazy[type[Writer]](".writer:FanucWriter")
     PIPELINE_FILE = "fanuc.xml"
-    CYCLE_WORDS = rs274_cycle_words(CODES, None, max_repeat=9999)
+    CYCLE_WORDS = Lazy[CycleWords](".codes:CYCLE_WORDS")  # (its code table, imported where a run reads it)
     """R level, Q peck/shift, P dwell (ms); K, L or K+L repeats (0-9999) per the set-up; cycles named
     G73-G89."""
     NATIVE_CYCLES = ALL_MILLING_CYCLES

@@ -10,6 +10,7 @@ and G16/G15 (polar coordinates, modal group 17) are read into ``FrameChange`` (`
 from __future__ import annotations
 
 from postproc.rs274.codes import CodeTable
+from postproc.rs274.cycle_words import rs274_cycle_words
 
 ROWS = (
     ("G00", "01", "motion", "rapid"),
@@ -100,3 +101,7 @@ CODES = CodeTable(
 )
 """Fanuc's code table. ``native_g``/``native_m``: codes kept verbatim; they round-trip to Fanuc and are
 unsupported anywhere else. Machine builders' codes (M29, G05.1, ...) are in ``machine_codes``."""
+
+CYCLE_WORDS = rs274_cycle_words(CODES, None, max_repeat=9999)
+"""The hole-cycle words this table gives (the dialect's ``CYCLE_WORDS``, imported with the table where a run
+first reads them: registering the dialect imports neither)."""

@@ -42,9 +42,13 @@ collections walking only what it makes from then on)."""
 
 def handler(command: str) -> Callable[[argparse.Namespace], int]:
     """The function that runs ``command`` (a key of ``HANDLERS``), its module imported now
-    (``FREEZE_IMPORTS`` says why the collector is paused)."""
+    (``FREEZE_IMPORTS`` says why the collector is paused), with the plugin-hook lane installed
+    (``postproc.fast.plugin_hooks``: a command's registry is made without pluggy where pluggy would call the hooks
+    plainly)."""
     module, _, name = HANDLERS[command].partition(":")
     with gc_paused(freeze=FREEZE_IMPORTS):
+        from ..fast import plugin_hooks
+        plugin_hooks.install()  # the registry calls the plugins' hooks through the lane where it can
         found: Callable[[argparse.Namespace], int] = getattr(importlib.import_module(f"{__package__}.{module}"),
                                                              name)
     return found

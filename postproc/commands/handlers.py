@@ -9,7 +9,6 @@ import io
 import os
 import re
 import sys
-from pathlib import Path
 from typing import Iterable, Iterator, Sequence, TextIO
 
 from ..api import read_blocks, translate
@@ -272,6 +271,7 @@ def cmd_config(args: argparse.Namespace) -> int:
     if args.action == "check":
         print(f"{args.file}: ok")
         return 0
+    from pathlib import Path
     base = str(Path(args.file).parent)
     sys.stdout.buffer.write(to_bytes(setup.make_xml_source(base, Path(args.file).name, True, flatten=args.flatten)))
     return 0

@@ -54,8 +54,33 @@ def _generated_code() -> CodeCache | None:
     import collections  # (already imported by the interpreter's start)
     from ..entry_points import cache_folder
     cache = CodeCache(cache_path(cache_folder()))
-    cache.install(collections)  # first: importing dataclasses makes named tuples (inspect, dis)
+    cache.install(collections)  # first: importing dataclasses makes named tuples (dis)
     cache.install_patterns()
+    _inspect_when_read()
     import dataclasses
     cache.install(dataclasses)
     return cache
+
+
+def _inspect_when_read() -> None:
+    """``inspect`` imported where the process first reads one of its names, not with ``dataclasses``, whose only
+    use of it is the signature it writes into the docstring of a dataclass that has none (every record of ours has
+    one: ``postproc.records``). With ``ast``, ``dis``, ``tokenize`` and ``linecache``, which it imports, it cost
+    every start ~5 ms (``-X importtime``), once pluggy (which imports it too) was no longer loaded
+    (``postproc.fast.plugin_hooks``). Until then ``sys.modules`` holds a module of that name whose every name
+    is the real module's, imported at the first (``importlib.util.LazyLoader`` does not do here: an ``import``
+    statement reads a module's ``__spec__``, which loads it). A process that imported it before keeps it."""
+    if "inspect" in sys.modules:
+        return
+    import types
+    stand_in = types.ModuleType("inspect", "``inspect``, imported when a name of it is first read.")
+
+    def real(name: str) -> object:
+        if sys.modules.get("inspect") is stand_in:
+            del sys.modules["inspect"]
+        import inspect
+        stand_in.__dict__.update(vars(inspect))
+        return getattr(inspect, name)
+
+    stand_in.__getattr__ = real  # type: ignore[method-assign]
+    sys.modules["inspect"] = stand_in

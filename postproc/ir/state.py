@@ -80,6 +80,10 @@ class SetUpPlaces:
 @mypyc_attr(allow_interpreted_subclasses=True)
 @dataclass(slots=True)
 class ModalState:
+    """The modal values in force where a program stands (motion, plane, units, feed, spindle, tool...), as its
+    blocks left them. (A docstring of its own: ``dataclasses`` writes one for a class without, importing
+    ``inspect`` at every start to do it: ``postproc.commands.launch``.)"""
+
     motion: str | None = None
     plane: str = "XY"
     units: str = "mm"

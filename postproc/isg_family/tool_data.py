@@ -134,6 +134,9 @@ def _d_keeps_the_length(resolver: Any, cc: CutterCompensation) -> bool:
 @mypyc_attr(allow_interpreted_subclasses=True)
 @dataclass
 class _Selection:
+    """The source's tool data selection in force (its length and radius registers). (A docstring of its own:
+    ``dataclasses`` imports ``inspect`` to write one for a class without.)"""
+
     length: int | None = None
     """The source's length register in force (None: no length offset)."""
     radius: int | None = None

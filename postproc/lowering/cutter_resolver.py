@@ -30,8 +30,6 @@ from .rule_trial import STAND_IN_RADIUS, STRETCH_LIMIT, RuleTrial
 from .lower import BlockStep, run_blocks, still_moving
 from .move_words import moving
 
-Keeps = Callable[["Resolver", CutterCompensation], bool]
-"""Whether the target writes a G41/G42 itself (given the resolver, for the tool data it tracks)."""
 _MODAL: Final = frozenset(("Units", "DistanceMode", "Plane", "DataSetting", "WorkOffset", "ToolSelect",
                            "ToolChange", "ToolLengthOffset", "FeedMode"))
 """Settings the resolver keeps while no compensation is on (a block with none of them, and no G41/G42, is
@@ -319,6 +317,10 @@ class Resolver(CompensatedMoves):
         self.last_register = register
         return register
 
+
+Keeps = Callable[[Resolver, CutterCompensation], bool]
+"""Whether the target writes a G41/G42 itself (given the resolver, for the tool data it tracks). (After the class:
+a class given by its name in an alias is a ``ForwardRef``, compiled with the interpreter's compiler at import.)"""
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)

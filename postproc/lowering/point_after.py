@@ -35,7 +35,7 @@ FOLLOWED: Final = frozenset(("CannedCycle", "LatheCycle", "MachineCoordinates", 
 lost (``loses_after``, a ``LABEL``): a step that keeps a fast path for plain moves sends these blocks the
 general way."""
 
-HoleCycleEnd = Callable[[Section], "dict[str, float] | None"]
+HoleCycleEnd = Callable[[Section], dict[str, float] | None]
 """Where a hole cycle block (its ``CannedCycle`` section) leaves the tool; None where not known."""
 
 _HOLE_CYCLE_ENDS: list[HoleCycleEnd] = []

@@ -24,7 +24,6 @@ import io
 import keyword
 import os
 import re
-from pathlib import PurePath
 from typing import TYPE_CHECKING, Any, ClassVar, Iterable, Iterator
 
 from ..errors import ConfigError, Diagnostics, ErrorLevel, Location, PostprocError, UsageError
@@ -36,6 +35,20 @@ if TYPE_CHECKING:
     from ..context import Context
     from ..dialect import Dialect
     from ..setup.machine_setup import MachineSetup
+
+def path_stem(path: str) -> str:
+    """``pathlib.PurePath(path).stem`` (the file's name without its last suffix: the ``program`` a template reads),
+    on the path's text where paths are POSIX ones: every run makes it, and ``pathlib`` (with ``urllib.parse`` and
+    ``ipaddress``, which it imports) is no module a start needs otherwise. ``tests/test_start_paths.py`` holds it to
+    ``PurePath`` on random paths."""
+    if os.name != "posix":  # (drives and two separators: PurePath's own parsing)
+        from pathlib import PurePath
+        return PurePath(path).stem
+    parts = [part for part in path.split("/") if part not in ("", ".")]
+    name = parts[-1] if parts else ""
+    dot = name.rfind(".")
+    return name[:dot] if 0 < dot < len(name) - 1 else name
+
 
 BLOCK_TEMPLATES = ("tool_change", "operation_start", "program_end")
 """Templates the translation renders at blocks (the others, header and footer, once each)."""
@@ -134,7 +147,7 @@ class Sequences:
         self.per_block = any(name in self.texts for name in BLOCK_TEMPLATES)
         self.needs_tools = any("tools" in names_used(text) for text in self.texts.values())
         self.base: dict[str, Any] = {
-            "program": PurePath(ctx.file).stem, "source_file": ctx.file, "source_dialect": source_dialect,
+            "program": path_stem(ctx.file), "source_file": ctx.file, "source_dialect": source_dialect,
             "target_dialect": target.NAME if target is not None else source_dialect, "machine": setup.name,
             "date": today() if self.texts else "", "setup": setup_values(setup)}
         self.base.update(defines or {})

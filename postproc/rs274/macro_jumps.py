@@ -96,6 +96,9 @@ def _own_condition(block: Block, control: While | Goto) -> None:
 
 @dataclass
 class _If:
+    """An open IF block's jumps. (Each record here has a docstring: ``dataclasses`` imports ``inspect`` to write
+    one for a class without.)"""
+
     branch: int | None
     """The number the current branch's test jumps to when false (None: no test pending, after ``Else``)."""
     end: int | None = None
@@ -104,6 +107,8 @@ class _If:
 
 @dataclass
 class _Jumps:
+    """One run's jump numbers: the next free one, the open IF blocks and loops, the labels and where they stand."""
+
     ctx: Context
     next: int | None = None
     ifs: dict[str, _If] = field(default_factory=dict)

@@ -12,11 +12,10 @@ from __future__ import annotations
 from typing import Any, ClassVar, Literal
 
 from ..records import record
-from .record import MAX_COORDINATE, pydantic_config, setting, values
+from .record import MAX_COORDINATE, ROTARY_AXES as ROTARY_AXES, pydantic_config, setting, values
 
 __all__ = ["MAX_COORDINATE", "AxisTravel", "WorkOffsetData", "ToolData", "CONTAINERS", "entry_values"]
 
-ROTARY_AXES = frozenset("ABC")
 AXIS_LETTERS = "XYZABCUVW"
 
 

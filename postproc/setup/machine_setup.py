@@ -10,7 +10,6 @@ never imports it. The per-block path reads plain attributes.
 
 from __future__ import annotations
 
-from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from ..errors import ConfigError, Location, UsageError
@@ -28,6 +27,7 @@ from .groups import (  # the records, named here as ever
 
 if TYPE_CHECKING:  # lxml is imported where XML is written; the machine's geometry where a set-up file has
     from lxml import etree  # some (postproc.setup.load)
+    from pathlib import Path  # annotations only: a start makes no path object (pathlib imports urllib.parse)
     from .machine import AxisTravel, ToolData, WorkOffsetData
     from .load import Lane
 
@@ -131,11 +131,13 @@ class MachineSetup(XmlNode):
     def pipeline_path(self) -> Path | None:
         if self.pipeline is None:
             return None
+        from pathlib import Path
         base = Path(self.source).parent if self.source else Path(".")
         return base / self.pipeline
 
     def library_paths(self) -> list[Path]:
         """The subprogram search path, in order, relative paths resolved from the set-up file's folder."""
+        from pathlib import Path
         base = Path(self.source).parent if self.source else Path(".")
         return [base / p for p in self.library]
 

@@ -22,6 +22,10 @@ MAX_COORDINATE = 100_000.0
 degrees): no machine comes near it, and an absurd value (``1e308``) is refused at its line rather than
 overflowing a sum."""
 
+ROTARY_AXES = frozenset("ABC")
+"""The axes whose positions are angles (degrees, never scaled by the machine's units): here, beside the records,
+for the work offsets of every start (``work_offsets``) without the machine's geometry (``machine``)."""
+
 
 def camel(name: str) -> str:
     """``peck_retract`` -> ``peckRetract``: the XML spelling of a set-up group's field."""

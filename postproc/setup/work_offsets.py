@@ -12,7 +12,7 @@ cancel), which is why it stands with the set-up, below both.
 from __future__ import annotations
 
 from ..ir.state import PLACED_AXES, SetUpPlaces
-from .machine import ROTARY_AXES
+from .record import ROTARY_AXES
 from .machine_setup import MachineSetup
 
 _NONE: dict[str, float] = {}

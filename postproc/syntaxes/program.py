@@ -15,7 +15,6 @@ above all, which the base does not choose) and, if it needs to, its ``spell_eval
 from __future__ import annotations
 
 import io
-from pathlib import Path
 from typing import TYPE_CHECKING, Callable, ClassVar, Iterable, Iterator
 
 from mypy_extensions import mypyc_attr
@@ -33,6 +32,7 @@ from ..interp.rules import STORED_PROGRAMS, SubprogramRules
 from ..interp.variables import RUN_INTERPRETER_KEY, RUN_VARIABLES_KEY, Variables, VariablesFactory
 
 if TYPE_CHECKING:
+    from pathlib import Path  # annotations only: a start makes no path object (pathlib imports urllib.parse)
     from ..interp.host import Reporter
     from ..interp.store import Program
     from ..interp.structure import StreamCheck

@@ -11,7 +11,6 @@ from __future__ import annotations
 from mypy_extensions import mypyc_attr
 
 import abc
-from pathlib import Path
 from typing import TYPE_CHECKING, Iterable, Iterator
 
 from ..errors import ConfigError, Location, PostprocError
@@ -21,6 +20,7 @@ from ..ir.source_map import locate
 from ..xmlio import DEFAULT, XFactory, XmlNode, lxml_etree, parse_xml_file, where
 
 if TYPE_CHECKING:  # annotations only: lxml is imported where XML is read or written (postproc.xmlio)
+    from pathlib import Path  # annotations only: a start makes no path object (pathlib imports urllib.parse)
     from lxml import etree
 
 

@@ -8,7 +8,20 @@ same map.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING, Any
+
 from .apply import ProgramOptions, program_options, transform_program
-from .spec import ProgramTransform, parse_transform
+
+if TYPE_CHECKING:
+    from .spec import ProgramTransform, parse_transform
 
 __all__ = ["ProgramOptions", "ProgramTransform", "parse_transform", "program_options", "transform_program"]
+
+
+def __getattr__(name: str) -> Any:
+    """``ProgramTransform`` and ``parse_transform``, from ``spec`` when first read: a translation that moves
+    nothing (``--transform`` not given) does not import the transform's reading."""
+    if name in ("ProgramTransform", "parse_transform"):
+        from . import spec
+        return getattr(spec, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

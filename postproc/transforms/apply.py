@@ -12,13 +12,15 @@ has made the blocks the target gets: what they carry is what is written.
 
 from __future__ import annotations
 
-from typing import Iterator
+from typing import TYPE_CHECKING, Iterator
 
 from ..context import Context
 from ..errors import UsageError
 from ..ir import Block
 from ..records import record
-from .spec import ProgramTransform, parse_transform
+
+if TYPE_CHECKING:
+    from .spec import ProgramTransform
 
 
 @record(frozen=True, slots=True)
@@ -39,6 +41,7 @@ def program_options(units: str | None = None, transform: str | ProgramTransform 
     if units is not None and units not in ("mm", "inch"):
         raise UsageError(f"--units is mm or inch, not {units!r}")
     if isinstance(transform, str):
+        from .spec import parse_transform  # (a transform given: its reading, not at every start)
         transform = parse_transform(transform)
     return ProgramOptions(units, transform)
 

@@ -19,17 +19,16 @@ from typing import Callable
 
 from postproc.syntaxes.comments import CommentSyntax
 from postproc.rs274.cutter_rules import NIST_V3
+from postproc.cycle_words import CycleWords
 from postproc.dialect import Dialect, Lazy, Reader, Writer
 from postproc.hookspecs import hookimpl
 from postproc.rs274.arc_ends import RS274NGC_ARC_END
-from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.rs274.order_of_execution import stops_after_motion
 from postproc.rs274.return_level import return_level_in_force
 from postproc.setup.machine_setup import MachineSetup
 from postproc.syntaxes.syntax import Pipeline
 from postproc.xmlio import XFactory
 
-from .codes import CODES
 
 
 class Mach3(Dialect):
@@ -41,7 +40,7 @@ class Mach3(Dialect):
     WRITER = Lazy[type[Writer]](".writer:Mach3Writer")
     """Imported when a run first writes Mach3, as the reader is."""
     PIPELINE_FILE = "mach3.xml"
-    CYCLE_WORDS = rs274_cycle_words(CODES, ("L",))
+    CYCLE_WORDS = Lazy[CycleWords](".codes:CYCLE_WORDS")  # (its code table, imported where a run reads it)
     """R level, Q peck, P dwell (seconds), L repeats."""
     NATIVE_CYCLES = frozenset({"drill", "peck_chip", "peck_deep"})
     """G81, G73 and G83 are written as cycles; every other cycle is expanded into plain moves. The G73

@@ -19,6 +19,7 @@ RS274/NGC interpreter version 3 report the manual follows.
 from __future__ import annotations
 
 from postproc.rs274.codes import CodeTable
+from postproc.rs274.cycle_words import rs274_cycle_words
 
 ROWS = (
     ("G0", "01", "motion", "rapid"),
@@ -96,3 +97,7 @@ optional (the NIST RS274/NGC version 3 rule, section 3.5.5, which the manual cop
 here]. Another L is kept verbatim (this dialect only)."""
 
 CODES = CodeTable(ROWS, native_g=NATIVE_G, user_m=USER_M)
+
+CYCLE_WORDS = rs274_cycle_words(CODES, ("L",))
+"""The hole-cycle words this table gives (the dialect's ``CYCLE_WORDS``, imported with the table where a run
+first reads them: registering the dialect imports neither)."""

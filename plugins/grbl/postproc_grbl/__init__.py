@@ -34,18 +34,17 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Callable, ClassVar
 
 from postproc.syntaxes.comments import CommentSyntax
+from postproc.cycle_words import CycleWords
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.grbl_family.dialect import GrblFamily
 from postproc.hookspecs import hookimpl
 from postproc.lowering.lazy_step import LazyStep
 from postproc.output.line_format import LineRule
-from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.setup.machine_setup import MachineSetup
 from postproc.syntaxes.syntax import Pipeline
 from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
 
-from .codes import CODES
 
 if TYPE_CHECKING:
     from postproc.context import Context
@@ -68,7 +67,7 @@ class Grbl(GrblFamily):
     """Imported when a run first reads grbl (``Lazy``), as are the writer and the block syntax."""
     WRITER = Lazy[type[Writer]](".writer:GrblWriter")
     PIPELINE_FILE = "grbl.xml"
-    CYCLE_WORDS = rs274_cycle_words(CODES, ("L",))
+    CYCLE_WORDS = Lazy[CycleWords](".codes:CYCLE_WORDS")  # (its code table, imported where a run reads it)
     """R level, Q peck/shift, P dwell (seconds), L repeats."""
     NATIVE_CYCLES = frozenset()
     """No canned cycles: every cycle is expanded to G0/G1/G4/M3/M4/M5."""

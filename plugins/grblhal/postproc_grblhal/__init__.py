@@ -43,6 +43,7 @@ from __future__ import annotations
 from typing import Callable, ClassVar, Mapping, TYPE_CHECKING
 
 from postproc.syntaxes.comments import CommentSyntax
+from postproc.cycle_words import CycleWords
 from postproc.dialect import Dialect, Lazy, Reader, ResolvedCycle
 from postproc.rs274.cycle_semantics import RS274 as RS274_CYCLES
 from postproc.grbl_family.dialect import GrblFamily
@@ -50,13 +51,11 @@ from postproc.hookspecs import hookimpl
 from postproc.lowering.lazy_step import LazyStep
 from postproc.output.line_format import LineRule
 from postproc.output.writer_base import Writer
-from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.rs274.order_of_execution import stops_after_motion
 from postproc.setup.machine_setup import MachineSetup
 from postproc.syntaxes.syntax import Pipeline
 from postproc.xmlio import XFactory
 
-from .codes import CODES
 
 comment_numbered_subs_after_end = LazyStep("postproc.lowering.program_end:comment_numbered_subs_after_end")
 
@@ -89,7 +88,7 @@ class Grblhal(GrblFamily):
     OWN_WRITER = Lazy[type[Writer]](".writer:GrblhalOwnWriter")
     """The writer of a grblHAL mill program written back to grblHAL (``writer_class``)."""
     PIPELINE_FILE = "grblhal.xml"
-    CYCLE_WORDS = rs274_cycle_words(CODES, ("L",))
+    CYCLE_WORDS = Lazy[CycleWords](".codes:CYCLE_WORDS")  # (its code table, imported where a run reads it)
     """R level, P dwell (seconds), L repeats."""
     NATIVE_CYCLES = frozenset({"drill", "drill_dwell"})
     """G81 and G82, kept native where they move as the source's cycle (``moves_like``); every other cycle

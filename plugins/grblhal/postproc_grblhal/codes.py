@@ -12,6 +12,7 @@ refuses, or runs by rules not modelled here, get a message saying why (``REFUSED
 from __future__ import annotations
 
 from postproc.rs274.codes import CodeTable
+from postproc.rs274.cycle_words import rs274_cycle_words
 
 ROWS = (
     ("G0", "01", "motion", "rapid"),
@@ -146,3 +147,7 @@ M_GROUPS: dict[int, str] = {**dict.fromkeys((0, 1, 2, 30), "4"), **dict.fromkeys
 CODES = CodeTable(ROWS, native_g=NATIVE_G, native_m=NATIVE_M, refused_g=REFUSED_G, refused_m=REFUSED_M,
                   user_m=USER_M)
 """grblHAL's code table."""
+
+CYCLE_WORDS = rs274_cycle_words(CODES, ("L",))
+"""The hole-cycle words this table gives (the dialect's ``CYCLE_WORDS``, imported with the table where a run
+first reads them: registering the dialect imports neither)."""

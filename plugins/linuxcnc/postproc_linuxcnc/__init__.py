@@ -15,6 +15,7 @@ from __future__ import annotations
 from typing import Callable, ClassVar
 
 from postproc.rs274.cutter_rules import ARC_CORNERS
+from postproc.cycle_words import CycleWords
 from postproc.dialect import Dialect, Lazy, Reader
 from postproc.rs274.cycle_semantics import RS274 as RS274_CYCLES
 from postproc.rs274.order_of_execution import stops_after_motion
@@ -26,13 +27,11 @@ from postproc.lowering.lazy_step import LazyStep
 from postproc.lowering.lower import Lowering
 from postproc.setup.machine_setup import MachineSetup
 from postproc.context import Context
-from postproc.rs274.cycle_words import rs274_cycle_words
 from postproc.rs274.variables import NGC_POSITION_READS
 from postproc.syntaxes.syntax import Pipeline
 from postproc.output.writer_base import Writer
 from postproc.xmlio import XFactory
 
-from .codes import CODES
 
 from .active_comments import COMMENTS, warn_active_comments
 
@@ -65,7 +64,7 @@ class Linuxcnc(Dialect):
     PIPELINE_FILE = "linuxcnc.xml"
     LATHE_PIPELINE_FILE = "linuxcnc_lathe.xml"
     """A lathe's: its block step follows the G70-G72 cycles' profiles (``block_syntax.NgcLatheBlockSyntax``)."""
-    CYCLE_WORDS = rs274_cycle_words(CODES, ("L",))
+    CYCLE_WORDS = Lazy[CycleWords](".codes:CYCLE_WORDS")  # (its code table, imported where a run reads it)
     """R level, Q peck/shift, P dwell (seconds), L repeats."""
     NATIVE_CYCLES = NATIVE
     """G73, G74, G81-G86, G89. Not G76 (threading here), G87/G88 (RS274/NGC words and motion), and
