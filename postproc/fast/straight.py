@@ -387,10 +387,11 @@ class StraightLane(Lane):
             if letter != axis or driven is not None and not (xyz and (letter == "X" or letter == "Y" or letter == "Z")) \
                     and letter not in driven or type(value) is not float:
                 return None
+            reading: float = value  # (unboxed once: compiled, each use of ``value`` as a float unboxed it again)
             if not canonical and not canonical_number(text[at + 1:end], MAX_PLACES, True):
                 if not _whole(text, at + 1, end):
                     return None
-                spelt = (writer.mm_texts if writer.modal.units == "mm" else writer.inch_texts).text(value)
+                spelt = (writer.mm_texts if writer.modal.units == "mm" else writer.inch_texts).text(reading)
                 if spelt is None:
                     return None  # (rounded: the general path carries what rounding left)
                 if pieces is None:
@@ -401,9 +402,9 @@ class StraightLane(Lane):
                 at = end + 1
                 index += 1
                 continue
-            if not (-SHORT_RANGE < value < SHORT_RANGE if every else as_written(text[at + 1:end], value, most)):
+            if not (-SHORT_RANGE < reading < SHORT_RANGE if every else as_written(text[at + 1:end], reading, most)):
                 return None
-            if not _reads_as(value, letter, values, held, index):
+            if not _reads_as(reading, letter, values, held, index):
                 return None  # (the number the word reads as: no step changed it)
             at = end + 1
             index += 1
@@ -458,19 +459,21 @@ class StraightLane(Lane):
                 line = text.replace(" ", spaced, 1) + eol  # (one copy: two slices and a join cost ~450 more)
             else:
                 line = f"{code} {text}{eol}"
-        else:
-            if coded:
-                line = f"{text[:start]}{code}{text[start + written:]}"
-            elif head:
-                line = text.replace(" ", spaced, 1)
-            else:
-                line = f"{code} {text}"
-            if below and len(line) + len(eol) >= below:
+        else:  # (put in pieces, no line made: ``Batch.write_spliced``; its length told from theirs)
+            line = text
+            length = len(text) - written + len(code) if coded else len(text) - 1 + len(spaced) if head \
+                else len(code) + 1 + len(text)
+            if below and length + len(eol) >= below:
                 return None
         if feed is not None:
             writer.modal.feed = rate
         if writer.after_blocks:
             writer.after_block(block)  # as ``generate`` (after the block's words: none fails from here)
         if out is not None:
-            out.write_line(line, eol)
+            if coded:  # the line's own motion code, rewritten
+                out.write_spliced(text, start, written, code, eol)
+            elif head:  # the code between spaces in place of the first space, the one after the block number
+                out.write_spliced(text, head, 1, spaced, eol)
+            else:
+                out.write_spliced(text, 0, 0, code + " ", eol)
         return line
