@@ -79,10 +79,16 @@ def _word_end(text: str, at: i64, size: i64, marks: i64) -> i64:
     return end
 
 
+_MOST_DIGITS: Final = 18
+"""The most digits of a block number the lane reads (an ``i64``'s; a longer one is the general path's)."""
+_TENS: Final[list[int]] = [10 ** k for k in range(_MOST_DIGITS)]
+"""``_TENS[k]``: the least number of ``k + 1`` digits with no leading zero (0 has one digit)."""
+
+
 def _digits(text: str, start: i64, end: i64) -> i64:
-    """The whole number ``text[start:end]`` spells with digits only (no sign, at most 18 of them: an ``i64``'s), or
+    """The whole number ``text[start:end]`` spells with digits only (no sign, at most ``_MOST_DIGITS`` of them), or
     -1 (none, another character, more digits): a block number's, read from the line itself."""
-    if start >= end or end - start > 18:
+    if start >= end or end - start > _MOST_DIGITS:
         return -1
     value: i64 = 0
     while start < end:
@@ -356,11 +362,13 @@ class StraightLane(Lane):
                 return None
             end = _word_end(text, 0, size, marks)
             number = sequence.number
-            if end < 2 or text[0] != "N" or end > 2 and text[1] == "0" or _digits(text, 1, end) != number \
+            if end < 2 or end > _MOST_DIGITS + 1 or text[0] != "N" or end > 2 and number < _TENS[end - 2] \
+                    or (held.sequence if held is not None else _digits(text, 1, end)) != number \
                     or self.max_number and number > self.max_number:
                 return None  # (N010 is written N10; a number the target refuses is dropped by the general path)
-            # (The digits read from the line: ``N`` and them are what ``sequence_words`` writes of the number, where a
-            # look-up of the reader's value in ``values`` cost ~130 instructions compiled.)
+            # (``N`` and the line's digits are what ``sequence_words`` writes of the number, told from the reader's
+            # numbers where they hold the line, else from the digits; a number of fewer digits than the word has a
+            # leading zero: a look-up of the reader's value in ``values`` cost ~130 instructions compiled.)
             at = end + 1
             head = end
             index = 1
@@ -459,21 +467,19 @@ class StraightLane(Lane):
                 line = text.replace(" ", spaced, 1) + eol  # (one copy: two slices and a join cost ~450 more)
             else:
                 line = f"{code} {text}{eol}"
-        else:  # (put in pieces, no line made: ``Batch.write_spliced``; its length told from theirs)
-            line = text
-            length = len(text) - written + len(code) if coded else len(text) - 1 + len(spaced) if head \
-                else len(code) + 1 + len(text)
-            if below and length + len(eol) >= below:
+        else:
+            if coded:
+                line = f"{text[:start]}{code}{text[start + written:]}"
+            elif head:
+                line = text.replace(" ", spaced, 1)  # (one copy: two slices cost more, ~175 instructions each)
+            else:
+                line = f"{code} {text}"
+            if below and len(line) + len(eol) >= below:
                 return None
         if feed is not None:
             writer.modal.feed = rate
         if writer.after_blocks:
             writer.after_block(block)  # as ``generate`` (after the block's words: none fails from here)
         if out is not None:
-            if coded:  # the line's own motion code, rewritten
-                out.write_spliced(text, start, written, code, eol)
-            elif head:  # the code between spaces in place of the first space, the one after the block number
-                out.write_spliced(text, head, 1, spaced, eol)
-            else:
-                out.write_spliced(text, 0, 0, code + " ", eol)
+            out.write_line(line, eol)
         return line

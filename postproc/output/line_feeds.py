@@ -23,7 +23,7 @@ from mypy_extensions import mypyc_attr
 _LONE_CR: Final = re.compile(r"\r(?!\n)")
 BATCH: Final = 512
 """Texts joined into one ``write`` of the output (a CAM block's is ~40 characters: ~20 kB a write; a line put
-in two pieces, ``write_line``, counts two; one spliced, ``write_spliced``, four)."""
+in two pieces, ``write_line``, counts two)."""
 
 
 @mypyc_attr(allow_interpreted_subclasses=True)
@@ -47,18 +47,6 @@ class Batch:
         and are joined with the batch."""
         pending = self.pending
         pending.append(text)
-        pending.append(eol)
-        if len(pending) >= BATCH:
-            self.flush()
-
-    def write_spliced(self, text: str, at: int, cut: int, insert: str, eol: str) -> None:
-        """``write_line(text[:at] + insert + text[at + cut:], eol)`` without the joined line: its three pieces and the
-        end of line wait, and are joined with the batch (a straight lane's line, its motion code put after its block
-        number: a new string made by ``str.replace`` cost ~500 instructions a line compiled, two slices ~150)."""
-        pending = self.pending
-        pending.append(text[:at])
-        pending.append(insert)
-        pending.append(text[at + cut:])
         pending.append(eol)
         if len(pending) >= BATCH:
             self.flush()
@@ -101,14 +89,3 @@ class LineFeeds(Batch):
             super().write_line(text, eol)
         else:
             self.write(text + eol)
-
-    def write_spliced(self, text: str, at: int, cut: int, insert: str, eol: str) -> None:
-        """``Batch.write_spliced`` where nothing of the line is a CR and the end of line is LF or CR LF (as
-        ``write_line``); else the line joined, through ``write``."""
-        if (eol == "\n" or eol == "\r\n") and "\r" not in text and "\r" not in insert:
-            self.wrote = True
-            if not self.content and (insert.strip() or text[:at].strip() or text[at + cut:].strip()):
-                self.content = True
-            super().write_spliced(text, at, cut, insert, eol)
-        else:
-            self.write(text[:at] + insert + text[at + cut:] + eol)
