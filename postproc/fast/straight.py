@@ -362,13 +362,20 @@ class StraightLane(Lane):
                 return None
             end = _word_end(text, 0, size, marks)
             number = sequence.number
-            if end < 2 or end > _MOST_DIGITS + 1 or text[0] != "N" or end > 2 and number < _TENS[end - 2] \
-                    or (held.sequence if held is not None else _digits(text, 1, end)) != number \
+            if end < 2 or end > _MOST_DIGITS + 1 or number < 0 or end > 2 and number < _TENS[end - 2] \
                     or self.max_number and number > self.max_number:
                 return None  # (N010 is written N10; a number the target refuses is dropped by the general path)
+            read_number: int = -1
+            if held is not None:
+                read_number = held.sequence  # (the first word's number where that word is an N of digits, else -1)
+            elif text[0] == "N":
+                read_number = _digits(text, 1, end)
+            if read_number != number:
+                return None
             # (``N`` and the line's digits are what ``sequence_words`` writes of the number, told from the reader's
             # numbers where they hold the line, else from the digits; a number of fewer digits than the word has a
-            # leading zero: a look-up of the reader's value in ``values`` cost ~130 instructions compiled.)
+            # leading zero: a look-up of the reader's value in ``values`` cost ~130 instructions compiled. Each
+            # choice in one type: a conditional expression of an ``int`` and an ``i64`` boxed both.)
             at = end + 1
             head = end
             index = 1
@@ -392,8 +399,8 @@ class StraightLane(Lane):
             if end < 0:
                 return None
             letter = text[at]
-            if letter != axis or driven is not None and not (xyz and (letter == "X" or letter == "Y" or letter == "Z")) \
-                    and letter not in driven or type(value) is not float:
+            if letter != axis or driven is not None and not (xyz and 88 <= ord(letter) <= 90) \
+                    and letter not in driven or type(value) is not float:  # (88-90: X, Y, Z; one code, not three tests)
                 return None
             reading: float = value  # (unboxed once: compiled, each use of ``value`` as a float unboxed it again)
             if not canonical and not canonical_number(text[at + 1:end], MAX_PLACES, True):
