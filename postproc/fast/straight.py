@@ -20,6 +20,7 @@ from ..ir.block import MARK_BITS, MARK_MASK
 from ..numbers import MAX_PLACES, SHORT_RANGE, as_written, canonical_number
 from ..output.line_feeds import Batch
 from ..output.writer_base import Lane
+from ..rs274.canonical_line import LineNumbers, line_numbers
 from ..rs274.motion_words import tiny_arc
 from ..rs274.writer import WordWriter
 from ..ir.state import PLANE_AXES
@@ -76,6 +77,38 @@ def _word_end(text: str, at: i64, size: i64, marks: i64) -> i64:
     while end < size and ord(text[end]) != 32:
         end += 1
     return end
+
+
+_MOST_DIGITS: Final = 18
+"""The most digits of a block number the lane reads (an ``i64``'s; a longer one is the general path's)."""
+_TENS: Final[list[int]] = [10 ** k for k in range(_MOST_DIGITS)]
+"""``_TENS[k]``: the least number of ``k + 1`` digits with no leading zero (0 has one digit)."""
+
+
+def _digits(text: str, start: i64, end: i64) -> i64:
+    """The whole number ``text[start:end]`` spells with digits only (no sign, at most ``_MOST_DIGITS`` of them), or
+    -1 (none, another character, more digits): a block number's, read from the line itself."""
+    if start >= end or end - start > _MOST_DIGITS:
+        return -1
+    value: i64 = 0
+    while start < end:
+        code = ord(text[start])
+        if code < 48 or code > 57:
+            return -1
+        value = value * 10 + (code - 48)
+        start += 1
+    return value
+
+
+def _reads_as(value: float, letter: str, values: dict[str, float | int | Expr], held: LineNumbers | None,
+              index: i64) -> bool:
+    """Whether a word of a block's line (its ``letter``, the ``index``-th word of the line) reads as ``value``: the
+    reader's value of it, from the run's ``LineNumbers`` where they hold the line (``held``: an unboxed number by
+    the word's place), else from the block's ``values`` (a look-up by letter, ~130 instructions compiled)."""
+    if held is not None:
+        return held.value(index) == value
+    read = values.get(letter)  # (Both floats: compiled, compared unboxed, where ``is`` boxed ``value`` anew and the
+    return type(read) is float and read == value  # objects were compared: ~190 instructions a word.)
 
 
 def _whole(text: str, start: i64, end: i64) -> bool:
@@ -235,6 +268,12 @@ class StraightLane(Lane):
         self.max_number = writer.MAX_BLOCK_NUMBER
         """A block number above it (when not 0) is the general path's to drop (``sequence_words``)."""
         self.puts = True
+        self.numbers: LineNumbers = line_numbers(writer.ctx.run_data)
+        """The run's numbers of the line its reader's scan left unmade last (``canonical_line.LineNumbers``, the one
+        the reader fills): where they are still the block's line's (compared by identity: no step read ahead), a
+        word's value is read from them by its place instead of looked up in ``Block.values`` (~130 instructions a
+        word compiled). Both are the reader's reading of the word's text, the one it holds and the general path
+        writes from (``source_number``)."""
         self.expansions: Lane | None = None
         """The lane of a block whose motion is an expansion (``postproc.fast.expansion_moves.ExpansionBlocks``,
         installed with the expansion-move lane where it applies): a block of no ``Motion`` is offered to it."""
@@ -317,17 +356,31 @@ class StraightLane(Lane):
         if canonical and block.spelled() is text:  # text unchanged since (``Block.marks``): each word's end is read
             marks = block.marks  # from them (``_word_end``)
         values = block.values  # what the words read as (a reader's, untouched since: ``Block.values``)
+        numbers = self.numbers
+        held = numbers if marks and numbers.text is text else None  # (the reader's numbers of this very line)
+        index: i64 = 0  # the place in the line of the word at ``at``
         if sequence is not None:
             if not isinstance(sequence, Sequence):
                 return None
             end = _word_end(text, 0, size, marks)
-            read_number = values.get("N")  # (an int: compiled, compared unboxed)
-            if end < 0 or text[0] != "N" or type(read_number) is not int or read_number != sequence.number \
-                    or end > 2 and text[1] == "0" or self.max_number and read_number > self.max_number \
-                    or not canonical and (text[1] == "-" or not _whole(text, 1, end)):
+            number = sequence.number
+            if end < 2 or end > _MOST_DIGITS + 1 or number < 0 or end > 2 and number < _TENS[end - 2] \
+                    or self.max_number and number > self.max_number:
                 return None  # (N010 is written N10; a number the target refuses is dropped by the general path)
+            read_number: int = -1
+            if held is not None:
+                read_number = held.sequence  # (the first word's number where that word is an N of digits, else -1)
+            elif text[0] == "N":
+                read_number = _digits(text, 1, end)
+            if read_number != number:
+                return None
+            # (``N`` and the line's digits are what ``sequence_words`` writes of the number, told from the reader's
+            # numbers where they hold the line, else from the digits; a number of fewer digits than the word has a
+            # leading zero: a look-up of the reader's value in ``values`` cost ~130 instructions compiled. Each
+            # choice in one type: a conditional expression of an ``int`` and an ``i64`` boxed both.)
             at = end + 1
             head = end
+            index = 1
         coded = at < size and text[at] == "G"  # the block's own motion code: it is rewritten
         if count != 1 + besides:
             return None
@@ -336,6 +389,7 @@ class StraightLane(Lane):
             end = _word_end(text, at, size, marks)
             written = end - at
             at = end + 1
+            index += 1
         most = writer.exact_mm if writer.modal.units == "mm" else writer.exact_inch
         every = most >= MAX_PLACES  # every canonical number has at most MAX_PLACES: as_written is the range
         driven = self.driven
@@ -347,28 +401,30 @@ class StraightLane(Lane):
             if end < 0:
                 return None
             letter = text[at]
-            if letter != axis or driven is not None and not (xyz and (letter == "X" or letter == "Y" or letter == "Z")) \
-                    and letter not in driven or type(value) is not float:
+            if letter != axis or driven is not None and not (xyz and 88 <= ord(letter) <= 90) \
+                    and letter not in driven or type(value) is not float:  # (88-90: X, Y, Z; one code, not three tests)
                 return None
+            reading: float = value  # (unboxed once: compiled, each use of ``value`` as a float unboxed it again)
             if not canonical and not canonical_number(text[at + 1:end], MAX_PLACES, True):
                 if not _whole(text, at + 1, end):
                     return None
-                number = (writer.mm_texts if writer.modal.units == "mm" else writer.inch_texts).text(value)
-                if number is None:
+                spelt = (writer.mm_texts if writer.modal.units == "mm" else writer.inch_texts).text(reading)
+                if spelt is None:
                     return None  # (rounded: the general path carries what rounding left)
                 if pieces is None:
                     pieces = []
                 pieces.append(text[copied:at + 1])
-                pieces.append(number)
+                pieces.append(spelt)
                 copied = end
                 at = end + 1
+                index += 1
                 continue
-            if not (-SHORT_RANGE < value < SHORT_RANGE if every else as_written(text[at + 1:end], value, most)):
+            if not (-SHORT_RANGE < reading < SHORT_RANGE if every else as_written(text[at + 1:end], reading, most)):
                 return None
-            read = values.get(letter)  # the number the word reads as: no step changed it. (Both floats: compiled,
-            if type(read) is not float or read != value:  # compared unboxed, where ``is`` boxed ``value`` anew and
-                return None  # the objects were compared: ~190 instructions a word.)
+            if not _reads_as(reading, letter, values, held, index):
+                return None  # (the number the word reads as: no step changed it)
             at = end + 1
+            index += 1
         if arc:
             if center is not None:
                 for axis, value in center.items():
@@ -381,6 +437,7 @@ class StraightLane(Lane):
                             or not _spelt(text, at + 1, end, canonical):
                         return None
                     at = end + 1
+                    index += 1
             else:
                 end = _word_end(text, at, size, marks)
                 if end < 0:
@@ -390,6 +447,7 @@ class StraightLane(Lane):
                         or not _spelt(text, at + 1, end, canonical):
                     return None
                 at = end + 1
+                index += 1
         rate = 0.0
         if feed is not None:
             if not isinstance(feed, Feed):
@@ -401,8 +459,7 @@ class StraightLane(Lane):
             rate = fed
             if not (-SHORT_RANGE < rate < SHORT_RANGE if every else as_written(text[at + 1:end], rate, most)):
                 return None
-            read = values.get("F")
-            if type(read) is not float or read != rate:
+            if not _reads_as(rate, "F", values, held, index):
                 return None
             at = end + 1
         if at != size + 1:
@@ -423,7 +480,7 @@ class StraightLane(Lane):
             if coded:
                 line = f"{text[:start]}{code}{text[start + written:]}"
             elif head:
-                line = text.replace(" ", spaced, 1)
+                line = text.replace(" ", spaced, 1)  # (one copy: two slices cost more, ~175 instructions each)
             else:
                 line = f"{code} {text}"
             if below and len(line) + len(eol) >= below:

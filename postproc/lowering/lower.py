@@ -260,7 +260,8 @@ class Walk:
                     if bits == UNREAD:
                         bits = _straight(motion, point)
                     if bits >= 0:
-                        point.note(point.words, bits)
+                        if point.follows:  # (a ``PassedPoint`` notes nothing: no call)
+                            point.note(point.words, bits)
                         continue
                 out = step.take_move(block)  # (None: still this move, with these words)
                 if not step.moves or step.passes:
@@ -291,7 +292,8 @@ class Walk:
                     if bits == UNREAD:
                         bits = _straight(motion, point)
                     if bits >= 0:
-                        point.note(point.words, bits)
+                        if point.follows:  # (a ``PassedPoint`` notes nothing: no call)
+                            point.note(point.words, bits)
                         continue
                 out = step.take_move(block)  # (None: still this move, with these words)
                 if not step.moves or step.passes:

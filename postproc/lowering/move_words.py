@@ -36,6 +36,8 @@ class NotedPoint:
         """The run's reader (``move_words``): what the loop reads a move with before it notes it here."""
         self.noted = 0
         """Bits (``X``, ``Y``, ``Z``) of the axes noted since the position was last brought up to date."""
+        self.follows = True
+        """``note`` notes (False: a ``PassedPoint``, which notes nothing: the lowering loop does not call it)."""
         self.x = 0.0
         self.y = 0.0
         self.z = 0.0
@@ -104,7 +106,12 @@ class NotedPoint:
 class PassedPoint(NotedPoint):
     """The ``BlockStep.point`` of a step that reads no point: a straight move alone in its block leaves the step as it
     is, so the loop passes it as a noted point's step, and nothing is noted (``postproc.rs274.lean_controller.passed``:
-    a note nothing read cost ~55 instructions a block compiled, every grbl and grblHAL translation)."""
+    a note nothing read cost ~55 instructions a block compiled, every grbl and grblHAL translation: the loop reads
+    ``follows`` instead of calling it)."""
+
+    def __init__(self, words: MoveWords) -> None:
+        super().__init__(words)
+        self.follows = False
 
     def note(self, words: MoveWords, bits: int) -> None:
         return

@@ -87,7 +87,10 @@ class Lane:
         format, or only a line rule it passes as it is when shorter than ``below``, ``passes_below``; 0: no rule) and
         is no blank line (which the writer checks): put it into ``out`` as ``write`` would answer it, in pieces
         (``Batch.write_line``: no string joined for the one block); False: nothing put (the writer asks ``write``,
-        then its general path). Asked only of a lane whose ``puts`` is set."""
+        then its general path). Asked only of a lane whose ``puts`` is set. A block it puts holds no sections but a
+        straight block's (``postproc.fast.straight.STRAIGHT_KEYS``: no tape mark, no template's text, no change of
+        distance mode), which ``Writer.write`` offers it before it looks for those, and it raises nothing (a block it
+        is not sure of is declined, for the general path to write or refuse)."""
         return False
 
 
@@ -176,6 +179,14 @@ class Writer(abc.ABC):
         shorter than ``passes_below`` passes as it is (``put`` is given that length)."""
         for block in blocks:
             line = block.line
+            if started and direct is not None and lane is not None and not displaced and not dropped \
+                    and self.set_aside is None and lane.put(block, direct, passes_below):
+                # (A block the lane puts is a straight one: no tape mark, no template's text, no change of distance
+                # mode, ``Lane.put``; so once the program has started, and while no move is displaced or dropped, it
+                # is offered first: the looks for those sections cost ~115 instructions each a block compiled.)
+                if self.opening is None and block.sections:
+                    self.opening = False
+                continue
             tape_mark = "TapeMark" in block.sections
             if not started and not tape_mark:
                 started = True
