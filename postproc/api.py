@@ -17,7 +17,6 @@ from .interp.control import GotoLabel
 from .dialect import Dialect
 from .errors import Diagnostics, ErrorLevel, PostprocError, UsageError
 from .ir import Block
-from .lowering.arcs import ArcOption, RewriteArcs, settle_arc_ends
 from .lowering.lower import lower_for
 from .plugins import Registry, default_registry
 from .collector import gc_paused as gc_paused  # public API names
@@ -33,6 +32,8 @@ from .patterns.lowering import POINT_BY_POINT_KEY
 from .transforms import ProgramOptions, program_options, transform_program
 
 if TYPE_CHECKING:
+    from .lowering.arcs import ArcOption
+    from .lowering.lower import Lowering
     from .transforms.spec import ProgramTransform
 
 
@@ -111,13 +112,14 @@ def _translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, tar
         ctx.run_data["sequences"] = sequences
         if output_map is not None:
             ctx.run_data["output_map"] = output_map
-        last = settle_arc_ends if arcs is None else RewriteArcs(arcs)  # after every other step (and the map)
+        last = _arc_pass(arcs, ctx, dst)  # after every other step (and the map)
         if options.active():
             lowered = lower_for(sequences.before_lowering(blocks), ctx, dst, on_unsupported, registry.lowerings)
-            lowered = last(transform_program(lowered, ctx, options), ctx, dst)
+            lowered = transform_program(lowered, ctx, options)
+            lowered = lowered if last is None else last(lowered, ctx, dst)
         else:  # (the arc pass in the lowering's loop)
             lowered = lower_for(sequences.before_lowering(blocks), ctx, dst, on_unsupported, registry.lowerings,
-                                then=(last,))
+                                then=() if last is None else (last,))
         writer_class = dst.writer_class(ctx)
         if writer_class is None:
             raise UsageError(f"the {dst.NAME} dialect cannot write this program (it has no writer for it)")
@@ -139,6 +141,20 @@ def _translate(lines: Iterable[str], out: TextIO, *, file: str, source: str, tar
             out.write(text.getvalue())
     diagnostics.check()
     return diagnostics
+
+
+def _arc_pass(arcs: ArcOption | None, ctx: Context, dst: type[Dialect]) -> Lowering | None:
+    """The run's last lowering step: ``--arcs``'s rewrite, or the settle pass where the source's controller and the
+    target leave arcs to settle (``ArcEndRule.settles_for``), else None: its module (``postproc.lowering.arcs``,
+    compiled, with ``arc_words`` and ``arc_geometry``: ~2.5M instructions) is not imported by a translation from a
+    spiral controller (Fanuc...) to one without grbl's R-arc slack (LinuxCNC, ISG, Fagor, a copy)."""
+    if arcs is not None:
+        from .lowering.arcs import RewriteArcs
+        return RewriteArcs(arcs)
+    if ctx.arc_end.settles_for(dst.R_ARC_FLOAT_SLACK):
+        from .lowering.arcs import settle_arc_ends
+        return settle_arc_ends
+    return None
 
 
 def _keep_check(src: type[Dialect], dst: type[Dialect], ctx: Context, registry: Registry,

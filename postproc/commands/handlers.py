@@ -11,10 +11,10 @@ import re
 import sys
 from typing import Iterable, Iterator, Sequence, TextIO
 
-from ..api import read_blocks, translate
 from ..errors import ConfigError, Diagnostics, Location, UsageError
 from ..output.outfile import BUFFER, ENCODING, write_output
-from ..plugins import default_registry
+from ..plugins import default_registry  # (first of the compiled path's users: it installs it, native.install)
+from ..reading import read_blocks
 from ..setup.machine_setup import MachineSetup, check_named_file, load_setup
 from ..xmlio import parse_xml_file, to_bytes
 from . import command_line
@@ -114,6 +114,7 @@ def _translate_one(args: argparse.Namespace, renumber: tuple[int, int | None] | 
     if renumber is not None:
         from .renumbering import apply_renumber
         apply_renumber(setup.output, renumber, args.source, args.target)
+    from ..api import translate  # (here: toolpath, verify and ir have no use for the translation's own modules)
     from ..lowering.sequences import parse_defines
     defines = parse_defines(args.define)
     with _open_program(path) as src:

@@ -71,6 +71,13 @@ class ArcEndRule:
         if self.of_centre_shift and self.runs != NEAREST_CENTRE:
             raise ValueError("a limit on the centre's move needs the nearest-centre path")
 
+    def settles_for(self, r_arc_float_slack: float) -> bool:
+        """Whether a translation from this rule's controller to a target with ``r_arc_float_slack``
+        (``Dialect.R_ARC_FLOAT_SLACK``) has arcs to settle (``postproc.lowering.arcs.settle_arc_ends``): the
+        source's controller moves the centre, or the target refuses an R arc over 2R by any rounding. Asked
+        before that module is imported: a translation with none to settle does not load it."""
+        return self.runs != SPIRAL or r_arc_float_slack != 0.0
+
     def describe(self) -> dict[str, object]:
         """The rule as plain data (the capability table, ``postproc dialects``)."""
         return {"mm": self.metric, "inch": self.inch, "relative": self.relative, "ceiling": self.ceiling,

@@ -25,7 +25,6 @@ from .control import (
     Until, While,
 )
 from ..errors import Location, PostprocError, ProgramError
-from .evaluation import certain_failure
 from ..ir.expr import Expr
 from ..ir import Block, Section, one_line
 from ..ir.source_map import locate
@@ -234,6 +233,9 @@ class StreamCheck:
 
     def see(self, block: Block) -> None:
         for expr, col in _expressions(block):
+            # (the evaluator imported at a program's first expression: a CAM program has none, and its byte
+            # code, with ``long_double``'s, was ~1M instructions of every start)
+            from .evaluation import certain_failure
             err = certain_failure(expr)
             if err is not None:
                 self.failed = True

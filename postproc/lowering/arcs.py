@@ -110,7 +110,7 @@ class SettleArcEnds(LoweringStep):
     within a tolerance of its own."""
 
     def start(self, ctx: Context, target: type[Dialect]) -> BlockStep | None:
-        if ctx.arc_end.runs == SPIRAL and not target.R_ARC_FLOAT_SLACK:
+        if not ctx.arc_end.settles_for(target.R_ARC_FLOAT_SLACK):
             return None
         return _Arcs(ctx, ArcOption(SETTLE), target)
 

@@ -48,7 +48,6 @@ from postproc.grbl_family.writer import GrblFamilyWriter
 from postproc.ir import Block, Motion
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.expressions import ExprSpelling
-from postproc.rs274.oword import spell_assignments, spell_oword
 from postproc.syntaxes.program import SUBPROGRAM_RULES_KEY
 
 from .cancels import GROUP_01
@@ -154,6 +153,7 @@ class GrblhalWriter(GrblFamilyWriter):
 
     def statement_words(self, section: Any, block: Block) -> list[str]:
         """An assignment or an o-word line (module docstring); anything else is refused."""
+        from postproc.rs274.oword import spell_assignments, spell_oword  # (at the first statement: a CAM program has none)
         if not self.expressions():
             self.unsupported("parameters and o-word flow control on a grblHAL build without expressions "
                              "(NGC_EXPRESSIONS_ENABLE): a set-up with <Controller expressions=\"true\"/> has them",
@@ -219,6 +219,7 @@ class GrblhalWriter(GrblFamilyWriter):
             for k in range(1, CALL_ARGUMENTS + 1):
                 given.setdefault(k, Num(0.0))
             call = Call(call.name, given, call.repeat, call.kind)
+        from postproc.rs274.oword import spell_oword
         return spell_oword(call)
 
     def table_refusal(self, register: int | None) -> str:

@@ -44,7 +44,6 @@ from postproc.interp.control import (
 from postproc.ir.expr import Binary, Expr, Num, Var
 from postproc.rs274.codes import CodeTable
 from postproc.rs274.expressions import LINUXCNC_SPELLING, ExprSpelling
-from postproc.rs274.oword import spell_assignments, spell_oword
 from postproc.rs274.writer import WordWriter
 from postproc.output.line_feeds import LineFeeds
 from postproc.interp.subprogram_names import NameRule, SubprogramNames
@@ -268,6 +267,7 @@ class LinuxcncWriter(WordWriter):
 
     def statement_words(self, section: Section, block: Block) -> list[str]:
         """``#1=5. #<x>=[#1+2.]`` (``spell_assignments``) or one o-word line (``spell_oword``)."""
+        from postproc.rs274.oword import spell_assignments, spell_oword  # (at the first statement: a CAM program has none)
         try:
             if isinstance(section, Assign):
                 return [spell_assignments(section)]
@@ -294,6 +294,7 @@ class LinuxcncWriter(WordWriter):
         """A counted loop (ISG ``$FOR``) as its counter set before ``o<n> while [#i LE end]`` and grown
         before ``o<n> endwhile``: exact when the end and the step are constants (a computed one would be
         evaluated on every pass instead of once), and the step is not 0."""
+        from postproc.rs274.oword import spell_assignments, spell_oword
         eol = block.eol or "\n"
         if isinstance(section, For):
             step, end = section.step, section.end
