@@ -39,9 +39,10 @@ def postproc_register_xml(factory: XFactory) -> None:
     register_expressions(factory)
     register_frames(factory)
     register_control(factory)
-    from .lowering.sequences import GeneratedText
-    for cls in (Pipeline, MachineSetup, ModalStateSyntax, ProgramSyntax, GeneratedText, RigidTap):
+    for cls in (Pipeline, MachineSetup, ModalStateSyntax, ProgramSyntax, RigidTap):
         cls.reg(factory)
+    # A template's text, imported with the templates' module: a translation imports it anyway, a toolpath never.
+    factory.register_lazy("Generated", "postproc.lowering.sequences:GeneratedText")
     # A lathe's cycle reader (with the cycles' words and the nose compensation it names), imported when a
     # pipeline names it: a mill's run never does.
     factory.register_lazy("LatheCycleSyntax", "postproc.rs274.lathe_cycles:LatheCycleSyntax")

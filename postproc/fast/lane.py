@@ -17,6 +17,7 @@ from typing import Final
 
 from ..rs274.writer import WordWriter
 from ..output.writer_base import Lane, Writer
+from .reading import own_in
 from .straight import LANE_MODES, STRAIGHT_KEYS, CopyLane, SourceLane, StraightLane
 
 STRAIGHT_METHODS: Final = ("write_block", "words_block", "generate", "unsplit", "_generate", "section_words", "section_writer",
@@ -39,16 +40,6 @@ _BASE: Final = frozenset(WordWriter.__mro__)
 def own(cls: type, methods: tuple[str, ...]) -> bool:
     """Whether every one of ``methods`` is the word writer's own for ``cls`` (no dialect's class overrides it)."""
     return own_in(cls, methods, _BASE)
-
-
-def own_in(cls: type, methods: tuple[str, ...], base: frozenset[type]) -> bool:
-    """Whether every one of ``methods`` is, for ``cls``, defined by a class of ``base`` (a family base and
-    the layers it is built of): no class a dialect adds overrides it."""
-    for name in methods:
-        owner = next((c for c in cls.__mro__ if name in c.__dict__), None)
-        if owner not in base:
-            return False
-    return True
 
 
 def choose(writer: Writer) -> Lane | None:

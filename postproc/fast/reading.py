@@ -21,7 +21,6 @@ from ..rs274.lathe_block_syntax import LatheBlockSyntax
 from ..rs274.ngc_block_syntax import NgcWordBlockSyntax
 from ..syntaxes.syntax import Pipeline
 from .holes import NextHoleLane
-from .lane import own_in
 from .plain import PlainLane, PlainLatheLane
 from .plain_ngc import NgcPlainLane
 
@@ -40,6 +39,17 @@ _WORD_BASE: Final = frozenset(WordBlockSyntax.__mro__)
 _LATHE_BASE: Final = frozenset(LatheBlockSyntax.__mro__)
 _NGC_BASE: Final = frozenset(NgcWordBlockSyntax.__mro__)
 _RESOLVE_BASE: Final = frozenset(CannedCycleResolveSyntax.__mro__)
+
+
+def own_in(cls: type, methods: tuple[str, ...], base: frozenset[type]) -> bool:
+    """Whether every one of ``methods`` is, for ``cls``, defined by a class of ``base`` (a family base and
+    the layers it is built of): no class a dialect adds overrides it. (Here, not in ``lane``, which the writer's
+    lane needs too: importing ``lane`` imports the word writer, which a toolpath's reading has no use for.)"""
+    for name in methods:
+        owner = next((c for c in cls.__mro__ if name in c.__dict__), None)
+        if owner not in base:
+            return False
+    return True
 
 
 def block_lane(syntax: WordBlockSyntax, numbers: LineNumbers | None = None) -> BlockLane | None:
