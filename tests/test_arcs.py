@@ -386,3 +386,31 @@ def test_a_run_that_ends_within_the_tolerance_of_the_line_is_not_cut() -> None:
                           source="linuxcnc", target="fanuc", tolerance=0.002, transform=transform,
                           chord_tolerance=0.001)
     assert report.ok, report.summary()
+
+
+def test_the_arc_pass_is_left_out_exactly_where_the_settle_pass_has_nothing_to_do() -> None:
+    """``postproc.api`` decides before importing ``postproc.lowering.arcs`` whether a translation has arcs to settle
+    (``ArcEndRule.settles_for``): for every pair of installed dialects, with their set-up's rule and with each other
+    path an arc can take, it leaves the pass out exactly where the pass's own ``start`` would do nothing."""
+    from dataclasses import replace
+
+    from postproc.api import _arc_pass
+    from postproc.errors import Diagnostics
+    from postproc.geometry.arc_end import RUNS
+    from postproc.lowering.arcs import RewriteArcs, SettleArcEnds, settle_arc_ends
+    from postproc.plugins import default_registry
+    from postproc.setup.machine_setup import MachineSetup
+
+    dialects = list(default_registry().dialects.values())
+    kept = left = 0
+    for src in dialects:
+        ctx = src.context("t.nc", MachineSetup(), Diagnostics())
+        for rule in {ctx.arc_end, *(replace(ctx.arc_end, runs=runs, of_centre_shift=False) for runs in RUNS)}:
+            ctx.arc_end = rule
+            for dst in dialects:
+                chosen = _arc_pass(None, ctx, dst)
+                assert (chosen is None) == (settle_arc_ends.start(ctx, dst) is None), (src.NAME, rule, dst.NAME)
+                assert chosen is None or isinstance(chosen, SettleArcEnds)
+                kept, left = kept + (chosen is not None), left + (chosen is None)
+                assert isinstance(_arc_pass(parse_arc_option("ijk"), ctx, dst), RewriteArcs)  # --arcs: always
+    assert kept and left  # (both sides met)

@@ -52,6 +52,12 @@ OTHER_DIALECTS = ("dialects.fagor", "dialects.gsk", "dialects.isg", "postproc_gr
 KEEP_CHECK = ("postproc.interp.jump_targets", "postproc.frames.parameters", "postproc.interp.numbers",
               "postproc.interp.returns")
 """What judges whether a program that computes can be kept symbolic for its target (``postproc.api._keep_check``)."""
+EXPRESSIONS_ONLY = ("postproc.interp.evaluation", "postproc.interp.long_double", "postproc.rs274.oword")
+"""What only a program with an expression or a statement uses: the structure check's evaluator (``certain_failure``,
+``postproc.interp.structure``) and the RS274/NGC statements' spelling (LinuxCNC's and grblHAL's writers)."""
+ARC_PASS = ("postproc.lowering.arcs", "postproc.lowering.arc_words", "postproc.lowering.arc_geometry")
+"""The arc pass: ``--arcs``, or the settle pass of a translation that has arcs to settle (``ArcEndRule.settles_for``:
+to grbl or grblHAL, or from a controller that moves the centre)."""
 NOT_FOR_A_PLAIN_TRANSLATION = ("postproc.transforms.carry", "postproc.transforms.units", "postproc.transforms.spec",
                                "postproc.rs274.lathe_cycles",
                                "postproc.cycles.turning", "postproc_linuxcnc.block_syntax", "postproc_linuxcnc.program",
@@ -59,7 +65,7 @@ NOT_FOR_A_PLAIN_TRANSLATION = ("postproc.transforms.carry", "postproc.transforms
                                "postproc.cycles.lathe_lowering", "postproc.cycles.lathe_offsets",
                                "postproc.rs274.lathe_tool_index", "postproc_linuxcnc.lathe_writer",
                                "postproc.rs274.ngc_lathe_writer", "postproc.rs274.ngc_lathe", "postproc.geometry.thread_lead",
-                               "postproc.setup.machine", *KEEP_CHECK)
+                               "postproc.setup.machine", *KEEP_CHECK, *EXPRESSIONS_ONLY, *ARC_PASS)
 """What a plain mill translation to LinuxCNC has no use for: the program transforms' reading and work (``--transform``,
 ``--units``: ``postproc.transforms.apply``), a lathe's cycle reader and turning cycles (``LatheCycleSyntax`` is
 registered lazily), a lathe's lowering (its cycles' expansion and the turret's index:
@@ -129,6 +135,21 @@ def test_a_toolpath_as_json_lines_loads_no_drawing(tmp_path: Path, one_line: Pat
     assert [name for name in DRAWING + NOT_AT_START if loaded(modules, name) and name != "json"] == []
 
 
+TRANSLATION_ONLY = ("postproc.api", "postproc.transforms", "postproc.lowering.sequences", "postproc.rs274.writer",
+                    "postproc.fast.lane", "postproc.fast.straight", *ARC_PASS, *EXPRESSIONS_ONLY)
+"""What a toolpath has no use for: the translation's API and its transforms (``postproc.commands.handlers`` imports
+``translate`` in the translate command), the templates' texts (``Generated`` is registered lazily), the writer's
+lane and the word writer (the reading lanes choose without them: ``postproc.fast.reading.own_in``), the arc pass and
+the expressions' modules."""
+
+
+def test_a_toolpath_loads_no_translation_writer_or_arc_pass(tmp_path: Path, one_line: Path) -> None:
+    out = tmp_path / "one.jsonl"
+    modules = modules_after(tmp_path, "toolpath", str(one_line), "--dialect", "fanuc", "-o", str(out))
+    assert "postproc.simulate.toolpath" in modules and out.read_text()  # the probe saw the run
+    assert [name for name in TRANSLATION_ONLY if loaded(modules, name)] == []
+
+
 def test_a_backplot_loads_the_drawing(tmp_path: Path, one_line: Path) -> None:
     """The other side of the lazy import: ``--format svg`` does load the drawing (the probe is not blind)."""
     out = tmp_path / "one.svg"
@@ -145,7 +166,9 @@ def test_a_plain_translation_loads_no_transform_lathe_or_target_reader(tmp_path:
 
 @pytest.mark.parametrize("program, target, options, wanted", [
     ("#1=2.\nG0 X#1 Y[#1+1]\nM30\n", "linuxcnc", (), ("postproc_linuxcnc.block_syntax", "postproc_linuxcnc.program",
-                                                      *KEEP_CHECK)),
+                                                      *KEEP_CHECK, *EXPRESSIONS_ONLY)),
+    ("G0 X1. Y2.\nG2 X3. Y2. R1. F100.\nM30\n", "linuxcnc", ("--arcs", "ijk"), ARC_PASS),
+    ("G0 X1. Y2.\nM30\n", "grbl", (), ARC_PASS),
     ("G0 X1. Y2.\nM30\n", "linuxcnc", ("--units", "inch"), ("postproc.transforms.units",)),
     ("G0 X1. Y2.\nM30\n", "linuxcnc", ("--transform", "translate 1,2"), ("postproc.transforms.carry",
                                                                    "postproc.transforms.spec")),
