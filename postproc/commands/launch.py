@@ -74,7 +74,7 @@ def _inspect_when_read() -> None:
     One name is there from the start: ``getfullargspec``, a function that calls the real one (importing the module
     then). ``lxml.etree`` binds it as it loads (``from inspect import getfullargspec``, its parser-target code,
     ``parsertarget.pxi`` in lxml 6.1), which read through the stand-in imported ``inspect`` with every set-up file
-    (``--machine``): ~17M instructions of a one-line ``translate --machine`` (callgrind). lxml calls it only for a
+    (``--machine``): ~18M instructions of a one-line ``translate --machine`` (callgrind). lxml calls it only for a
     parser target with a ``start`` method (postproc has none), and then with the real function's result or
     exception (``tests/test_launch.py``)."""
     if "inspect" in sys.modules:
