@@ -11,6 +11,7 @@ from __future__ import annotations
 from mypy_extensions import mypyc_attr
 
 import importlib
+import os
 import re
 from typing import TYPE_CHECKING, Any, Callable, ClassVar, Iterator, TypeVar
 
@@ -116,15 +117,29 @@ def _offset_location(data: bytes, offset: int, file: str) -> Location:
 
 def parse_xml_file(path: str | Path, max_elements: int | None = None,
                    max_bytes: int | None = None) -> etree._Element:
-    from pathlib import Path
-    p = Path(path)
+    """The XML file ``path``, named in its messages (and its elements' ``where``) as ``path_text`` spells it."""
+    file = path_text(path)
     max_bytes = MAX_XML_BYTES if max_bytes is None else max_bytes
     try:
-        with open(p, "rb") as f:
+        with open(file, "rb") as f:
             data = f.read(max_bytes + 1)  # never more than the bound, whatever the file is
     except OSError as exc:
-        raise ConfigError(f"cannot read {p}: {exc.strerror}", Location(str(p), 1, 1)) from None
-    return parse_xml_bytes(data, str(p), max_elements, max_bytes)
+        raise ConfigError(f"cannot read {file}: {exc.strerror}", Location(file, 1, 1)) from None
+    return parse_xml_bytes(data, file, max_elements, max_bytes)
+
+
+def path_text(path: str | Path) -> str:
+    """``str(pathlib.PurePath(path))``: the path without empty and ``.`` parts (``./m.xml`` is ``m.xml``, ``a//b/`` is
+    ``a/b``), as the messages about a file have always named it, on the path's text where paths are POSIX ones: a
+    set-up file's load (``postproc.setup.load``) makes no path object, as ``pathlib`` (with ``urllib.parse``,
+    ``ipaddress`` and ``fnmatch``, which it imports) is no module a run needs otherwise. ``tests/test_setup_paths.py``
+    holds it to ``PurePath`` on random paths."""
+    text = os.fspath(path)
+    if os.name != "posix":  # (drives, two separators: PurePath's own parsing)
+        from pathlib import PurePath
+        return str(PurePath(text))
+    root = "//" if text.startswith("//") and not text.startswith("///") else "/" if text.startswith("/") else ""
+    return root + "/".join(part for part in text.split("/") if part and part != ".") or "."
 
 
 def to_bytes(el: etree._Element) -> bytes:

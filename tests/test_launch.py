@@ -64,3 +64,59 @@ def test_python_m_postproc_is_the_launcher(tmp_path: Path):
                             "--to", "linuxcnc"], check=False, capture_output=True, text=True)
     assert wrong.returncode == 2
     assert "nosuch" in wrong.stderr
+
+
+STAND_IN_PROBE = """
+import json, sys
+from postproc.commands import launch
+launch._inspect_when_read()
+from lxml import etree
+quiet = sorted(m for m in ("ast", "dis", "tokenize") if m in sys.modules)  # inspect not imported with lxml
+
+
+class Target:
+    def __init__(self):
+        self.seen = []
+
+    def start(self, tag, attrib, nsmap):  # lxml passes nsmap where getfullargspec shows a third argument
+        self.seen.append([tag, dict(nsmap)])
+
+    def close(self):
+        return self.seen
+
+
+seen = etree.fromstring('<a xmlns:p="urn:p"><b/></a>', etree.XMLParser(target=Target()))
+from inspect import getfullargspec  # (the real module's now)
+import inspect
+samples = [lambda a, *b, c=1, **d: 0, Target.start, len, print]
+def spec(f):
+    try:
+        return repr(getfullargspec(f))
+    except TypeError as exc:
+        return "TypeError: " + str(exc)
+print(json.dumps([quiet, seen, "ast" in sys.modules, sys.modules["inspect"].getfullargspec is inspect.getfullargspec,
+                  [spec(f) for f in samples]]))
+"""
+
+
+def test_lxml_imports_without_inspect_and_its_parser_targets_work_as_with_it() -> None:
+    """``lxml.etree`` binds ``inspect.getfullargspec`` as it loads: the stand-in's own function, so loading it imports
+    no ``inspect``; called (a parser target's ``start``), it gives the real function's answer: here the namespace
+    map lxml passes to a ``start`` of three arguments."""
+    done = subprocess.run([sys.executable, "-c", STAND_IN_PROBE], capture_output=True, text=True, timeout=120,
+                          check=False)
+    assert done.returncode == 0, done.stderr
+    import inspect
+    import json
+    quiet, seen, imported, same, specs = json.loads(done.stdout)
+    assert quiet == []
+    assert seen == [["a", {"p": "urn:p"}], ["b", {}]]  # (the namespaces an element declares)
+    assert imported and same  # the call imported the real module, whose names the stand-in then holds
+
+    def spec(f: object) -> str:
+        try:
+            return repr(inspect.getfullargspec(f))  # type: ignore[arg-type]
+        except TypeError as exc:
+            return "TypeError: " + str(exc)
+    assert specs[0] == spec(lambda a, *b, c=1, **d: 0)
+    assert specs[2:] == [spec(len), spec(print)]

@@ -88,7 +88,7 @@ def test_a_value_set_back_to_its_default_is_an_override(cli, tmp_path):
 
 
 def test_a_shipped_base_by_name(tmp_path):
-    assert (BASES / "haas-mill.xml").is_file()
+    assert (Path(BASES) / "haas-mill.xml").is_file()
     child = _write(tmp_path, "vf2.xml", '<MachineSetup name="VF-2" extends="haas-mill.xml">\n'
                                         '  <Machine axes="XYZA"/>\n</MachineSetup>\n')
     setup = load_setup(child)
@@ -350,7 +350,7 @@ def test_a_plugin_group_cannot_take_a_core_element():
 ROOT = Path(__file__).resolve().parents[1]
 
 
-@pytest.mark.parametrize("path", sorted(BASES.glob("*.xml")), ids=lambda p: p.name)
+@pytest.mark.parametrize("path", sorted(Path(BASES).glob("*.xml")), ids=lambda p: p.name)
 def test_every_shipped_base_checks_clean_and_dumps_identical(cli, path):
     assert cli("config", "check", path).status == 0
     assert cli("config", "dump", path).out == path.read_bytes()

@@ -61,3 +61,26 @@ def test_values_writes_xml_names_and_leaves_defaults_out() -> None:
     cycles = CycleSettings(peck_retract=0.2, shift_direction="-Y")
     assert values(cycles, by_alias=True, exclude_defaults=True) == {"peckRetract": 0.2, "shiftDirection": "-Y"}
     assert list(values(cycles))[:2] == ["peck_retract", "peck_clearance"]
+
+
+@pytest.mark.parametrize("cls", list(CONTAINERS.values()), ids=lambda c: c.TAG)
+def test_an_entry_class_gives_its_field_types_without_compiling(cls: type[Any], monkeypatch: pytest.MonkeyPatch) -> None:
+    """The entries' annotations are evaluated where ``postproc.setup.machine`` loads (not text): the set-up lane's
+    ``typing.get_type_hints`` of a class a set-up file fills compiles none of them (``typing.ForwardRef``), and so
+    builds no syntax-tree types in a ``--machine`` run; the types are the ones the text would evaluate to."""
+    import builtins
+    import typing
+    compiled: list[object] = []
+    real = builtins.compile
+
+    def counting(source: Any, *args: Any, **kwargs: Any) -> Any:
+        compiled.append(source)
+        return real(source, *args, **kwargs)
+
+    hints = {f.name: f.type for f in dataclasses.fields(cls)}
+    assert not any(isinstance(t, str) for t in hints.values())
+    monkeypatch.setattr(builtins, "compile", counting)
+    resolved = typing.get_type_hints(cls)
+    monkeypatch.undo()
+    assert compiled == []
+    assert {name: resolved[name] for name in hints} == hints

@@ -274,6 +274,22 @@ def test_a_set_up_file_is_validated_with_pydantic(tmp_path: Path, one_line: Path
     assert loaded(modules, "pydantic") and "postproc.setup.validate" in modules
 
 
+NOT_FOR_A_SET_UP = ("pathlib", "urllib", "ipaddress", "fnmatch", "ast", "dis", "tokenize")
+"""What loading a set-up file (``--machine``) does not import: ``pathlib`` with what it imports (the loader's paths are
+text, ``postproc.setup.paths``), nor ``inspect``, seen by what it imports, which lxml would (``lxml.etree`` binds
+``inspect.getfullargspec`` as it loads: ``postproc.commands.launch._inspect_when_read``)."""
+
+
+@pytest.mark.parametrize("setup", ["benchmarks/machine.xml", "examples/setups/fanuc_0i_mf_vmc.xml"])
+def test_a_set_up_file_loads_no_pathlib_and_no_inspect(tmp_path: Path, one_line: Path, setup: str) -> None:
+    """The bench's set-up and a shipped example that extends a base (``fanuc-0i-mf.xml``)."""
+    out = tmp_path / "one.jsonl"
+    modules = warm_modules_after(tmp_path, "toolpath", str(one_line), "--dialect", "fanuc", "--machine",
+                                 str(ROOT / setup), "-o", str(out))
+    assert "postproc.setup.load" in modules and "lxml.etree" in modules and out.read_text()  # the probe saw the run
+    assert [name for name in NOT_FOR_A_SET_UP if loaded(modules, name)] == []
+
+
 ALL_MODULES = """
 import importlib, pkgutil, sys
 from postproc import native

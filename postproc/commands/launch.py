@@ -69,7 +69,14 @@ def _inspect_when_read() -> None:
     every start ~5 ms (``-X importtime``), once pluggy (which imports it too) was no longer loaded
     (``postproc.fast.plugin_hooks``). Until then ``sys.modules`` holds a module of that name whose every name
     is the real module's, imported at the first (``importlib.util.LazyLoader`` does not do here: an ``import``
-    statement reads a module's ``__spec__``, which loads it). A process that imported it before keeps it."""
+    statement reads a module's ``__spec__``, which loads it). A process that imported it before keeps it.
+
+    One name is there from the start: ``getfullargspec``, a function that calls the real one (importing the module
+    then). ``lxml.etree`` binds it as it loads (``from inspect import getfullargspec``, its parser-target code,
+    ``parsertarget.pxi`` in lxml 6.1), which read through the stand-in imported ``inspect`` with every set-up file
+    (``--machine``): ~18M instructions of a one-line ``translate --machine`` (callgrind). lxml calls it only for a
+    parser target with a ``start`` method (postproc has none), and then with the real function's result or
+    exception (``tests/test_launch.py``)."""
     if "inspect" in sys.modules:
         return
     import types
@@ -82,5 +89,9 @@ def _inspect_when_read() -> None:
         stand_in.__dict__.update(vars(inspect))
         return getattr(inspect, name)
 
+    def getfullargspec(func: object) -> object:
+        return real("getfullargspec")(func)  # type: ignore[operator]
+
     stand_in.__getattr__ = real  # type: ignore[method-assign]
+    stand_in.__dict__["getfullargspec"] = getfullargspec
     sys.modules["inspect"] = stand_in

@@ -14,21 +14,22 @@ from __future__ import annotations
 import os
 import stat
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import TYPE_CHECKING, Any, Callable
 
 from lxml import etree
 
 from ..errors import ConfigError, ErrorList, Location, PostprocError
 from .machine import AXIS_LETTERS, CONTAINERS, Entry
+from .paths import is_file, join_text, name_text, parent_text
 from .validate import Invalid, validate
-from ..xmlio import parse_xml_file, where
+from ..xmlio import parse_xml_file, path_text, where
 
 if TYPE_CHECKING:
+    from pathlib import Path  # annotations only: the loader's paths are text (``postproc.setup.paths``)
     from .record import SetupGroup
 
-BASES = Path(__file__).parent / "bases"
-"""The shipped bases, named by file name in ``extends``."""
+BASES = join_text(parent_text(__file__), "bases")
+"""The folder of the shipped bases, named by file name in ``extends`` (its path as text: ``postproc.setup.paths``)."""
 MAX_CHAIN = 64
 """Files in one inheritance chain (a longer chain is refused: no real set-up comes near it)."""
 MAX_SETUP_BYTES = 4 << 20
@@ -60,24 +61,26 @@ def resolve_chain(path: str | Path) -> list[etree._Element]:
     """The roots of ``path``'s inheritance chain, base first. A missing base or a cycle is located at the
     ``extends`` that names it."""
     chain: list[etree._Element] = []
-    seen: list[Path] = []
-    current = Path(path)
+    seen: list[str] = []
+    """Each file's real path (``Path.resolve``: each was read, so no link loops)."""
+    current = path_text(path)
     while True:
         root = parse_xml_file(current, max_bytes=MAX_SETUP_BYTES)
         if root.tag != "MachineSetup":
-            raise ConfigError(f"expected <MachineSetup>, found <{root.tag}>", Location(str(current), root.sourceline or 1, 1))
+            raise ConfigError(f"expected <MachineSetup>, found <{root.tag}>", Location(current, root.sourceline or 1, 1))
         chain.append(root)
-        seen.append(current.resolve())
+        seen.append(os.path.realpath(current))
         base = root.get("extends")
         if base is None:
             return chain[::-1]
-        here = where(root, str(current))
-        found = find_base(base, current.parent)
+        here = where(root, current)
+        found = find_base(base, parent_text(current))
         if found is None:
-            raise ConfigError(f"extends: base {base!r} not found (neither beside {current.name} nor among the "
+            raise ConfigError(f"extends: base {base!r} not found (neither beside {name_text(current)} nor among the "
                               f"shipped bases: {', '.join(shipped_bases()) or 'none'})", here)
-        if found.resolve() in seen:
-            names = " extends ".join(str(p) for p in [*seen[seen.index(found.resolve()):], found.resolve()])
+        real = os.path.realpath(found)
+        if real in seen:
+            names = " extends ".join([*seen[seen.index(real):], real])
             raise ConfigError(f"extends: inheritance cycle: {names}", here)
         if len(chain) >= MAX_CHAIN:
             raise ConfigError(f"extends: more than {MAX_CHAIN} set-ups in one chain", here)
@@ -89,7 +92,7 @@ def irregular(path: str, root: etree._Element) -> str | None:
     ``open`` would wait for a writer forever, a device, a folder. None for a regular file, or for nothing
     at all (reading it says so). Only ``os.stat``: nothing is opened."""
     file = root.getroottree().docinfo.URL
-    full = Path(file).parent / path if file and not os.path.isabs(path) else Path(path)
+    full = join_text(parent_text(file), path) if file and not os.path.isabs(path) else path_text(path)
     try:
         mode = os.stat(full).st_mode
     except (OSError, ValueError):
@@ -101,27 +104,28 @@ def irregular(path: str, root: etree._Element) -> str | None:
     return f"{path} is {kind}"
 
 
-def find_base(name: str, folder: Path) -> Path | None:
+def find_base(name: str, folder: str) -> str | None:
     """A local file (relative to the extending file's folder) first, then a shipped base by name."""
     if not name.strip():
         return None
-    local = folder / name
-    if local.is_file():
+    local = join_text(folder, name)
+    if is_file(local):
         return local
-    shipped = BASES / name
-    if "/" not in name and "\\" not in name and shipped.is_file():
+    shipped = join_text(BASES, name)
+    if "/" not in name and "\\" not in name and is_file(shipped):
         return shipped
     return None
 
 
 def shipped_bases() -> list[str]:
-    return sorted(p.name for p in BASES.glob("*.xml"))
+    from pathlib import Path  # (a message's only: a base not found)
+    return sorted(p.name for p in Path(BASES).glob("*.xml"))
 
 
 class Merger:
     """Merges a chain of ``<MachineSetup>`` roots and validates the result, collecting every problem."""
 
-    def __init__(self, groups: dict[str, type["SetupGroup"]], final_dir: Path | None,
+    def __init__(self, groups: dict[str, type["SetupGroup"]], final_dir: str | None,
                  lane: Lane | None = None) -> None:
         self.groups = groups
         self.final_dir = final_dir
@@ -220,10 +224,10 @@ class Merger:
         file = root.getroottree().docinfo.URL
         if self.final_dir is None or not file or os.path.isabs(path):
             return path
-        folder = Path(file).parent
-        if folder.resolve() == self.final_dir.resolve():
+        folder = parent_text(file)
+        if os.path.realpath(folder) == os.path.realpath(self.final_dir):
             return path
-        return os.path.relpath(folder / path, self.final_dir)
+        return os.path.relpath(join_text(folder, path), self.final_dir)
 
     def read_group(self, el: etree._Element, last: bool) -> None:
         if len([c for c in el if isinstance(c.tag, str)]):
@@ -310,7 +314,7 @@ class Merger:
             self.problem(f"<Tools table>: {problem}", el)
             return
         file = root.getroottree().docinfo.URL
-        path = Path(file).parent / name if file and not os.path.isabs(name) else Path(name)
+        path = join_text(parent_text(file), name) if file and not os.path.isabs(name) else path_text(name)
         try:
             found = read_tool_table(path)
         except ErrorList as errors:
@@ -439,7 +443,7 @@ def merge(roots: list[etree._Element], groups: dict[str, type["SetupGroup"]], so
 def merge_collect(roots: list[etree._Element], groups: dict[str, type["SetupGroup"]], source: str | None,
                   make: Callable[..., Any], lane: Lane | None = None) -> tuple[Any, list[ConfigError]]:
     """Roots (base first) -> the set-up (a value with a problem left at its default) and the problems."""
-    final_dir = Path(source).parent if source else None
+    final_dir = parent_text(source) if source else None
     merger = Merger(groups, final_dir, lane)
     for i, root in enumerate(roots):
         merger.read(root, i == len(roots) - 1)

@@ -5,9 +5,14 @@ Kept apart from ``postproc.setup.machine_setup`` (the controller's parameters) b
 (``postproc.simulate.travel``) reads them: they say where the program's points are on the machine.
 Each entry is keyed (axis letter, work-system number, tool number), so a set-up that ``extends`` another
 overrides one entry, or one attribute of one entry, without repeating the rest.
-"""
 
-from __future__ import annotations
+The annotations are evaluated where the module loads (no ``from __future__ import annotations``): the set-up lane
+reads the field types of each entry class a set-up file fills (``typing.get_type_hints``,
+``postproc.fast.setup_values``), and as text each type was compiled there (``typing.ForwardRef``), the run's
+first compile also building the interpreter's syntax-tree types: ~12M instructions of a ``--machine`` run whose
+set-up gives tools or axes (callgrind). Evaluated here, in byte code, they cost the import nothing more
+(``import postproc.setup.machine``: 3.2M instructions; 3.7M with the annotations as text).
+"""
 
 from typing import Any, ClassVar, Literal
 
