@@ -354,8 +354,8 @@ def test_a_record_writes_what_json_writes_of_its_event(keys: tuple[str, ...], da
                                                        twins: list[bool], f: float | int | None, mode: str | None,
                                                        arc: bool, controlled: bool) -> None:
     """``_record_into`` on random records: straight moves and arcs, with or without a feed, a feed mode and a
-    controlled point whose values are the programmed point's own objects on some axes (its head, the first two,
-    written once and copied) or other numbers: the text json writes of the record's ``event()``."""
+    controlled point whose values are the programmed point's own objects on some axes (spelt from the units the
+    programmed ones had) or other numbers: the text json writes of the record's ``event()``."""
     point: list[float | int] = [data.draw(RECORD_NUMBERS) for _ in keys]
     ctrl: list[float | int] | None = None
     if controlled:

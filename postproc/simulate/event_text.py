@@ -326,8 +326,6 @@ class _KeyTexts:
         self.f_first = b""
         """``f_text`` with the controlled point's opening after it (``', "f": 1500, "controlled": {"x": '``): a
         record with a feed, no ``feed_mode`` and a controlled point writes it as one text."""
-        self.head = BytesWriter()
-        """Where ``_record_into`` spells a record's head, its programmed point's first two values, for two uses."""
 
     def update(self, keys: tuple[str, ...]) -> None:
         self.keys = keys
@@ -365,12 +363,11 @@ _RECORD_KEYS: Final = _KeyTexts()
 def _record_into(record: MoveRecord, w: BytesWriter, line_end: bool) -> None:
     """Write the JSON text of ``record`` (``MoveRecord.event()``'s, with its closing brace and, where ``line_end``,
     the line end): field by field, in the order ``event()`` gives its keys, with no look-up or type test of a key
-    (``tests/test_toolpath_numbers.py`` holds it to json's text of ``event()``). Where the controlled point's first
-    two values are the programmed point's own objects (under a tool length alone, its X and Y: most moves of a CAM
-    program after its G43), their text, with the key between them, is spelt once (``_KeyTexts.head``) and written twice:
-    spelling them again cost ~420 instructions a move, the head's bytes object ~230 (callgrind, branch tpmove,
-    2026-12-02 noon); copying the programmed point's text from the writer a character at a time (``w[k]``, ~35
-    instructions a character compiled) cost what it saved (branch tpwall3). The lists are walked by ``zip``
+    (``tests/test_toolpath_numbers.py`` holds it to json's text of ``event()``). A controlled point's float that is
+    the programmed point's own object (under a tool length alone, its X and Y) is spelt again: copying its text from
+    where it was written, a character at a time (``w[k]``, ~35 instructions a character compiled, keys between
+    included), cost what it saved (callgrind, branch tpwall3); it is spelt from the units its programmed twin had
+    (``_float_units`` once, not twice: ~100 instructions a float, branch tpmove). The lists are walked by ``zip``
     (compiled, an item taken unchecked, where an index was a checked call)."""
     texts = _RECORD_KEYS
     keys = record.keys
@@ -380,30 +377,31 @@ def _record_into(record: MoveRecord, w: BytesWriter, line_end: bool) -> None:
     _int_into(record.line, w)
     kind = record.kind
     w.write(texts.kind_text if kind is texts.kind else texts.kind_of(kind))  # (with the first axis key)
+    keyed = False
     point = record.point
-    controlled = record.controlled
-    later = texts.later
-    skip = 0  # the values the head holds
-    head = b""
-    if controlled is not None and len(point) >= 2 and len(controlled) >= 2 and controlled[0] is point[0] \
-            and controlled[1] is point[1]:
-        spelt = texts.head
-        spelt.truncate(0)
-        _number_into(point[0], spelt)
-        spelt.write(later[1])
-        _number_into(point[1], spelt)
-        head = spelt.getvalue()
-        w.write(head)
-        skip = 2
     i = 0
-    for text, value in zip(later, point):
-        if i >= skip:
-            if i > 0:  # (the first key came with the kind)
-                w.write(text)
-            if isinstance(value, float):  # (most often: the float's own call, not through the union's)
-                _float_into(value, w)
+    u0: i64 = _NO_UNITS  # the first three floats' units, for the controlled point's floats that are them
+    u1: i64 = _NO_UNITS
+    u2: i64 = _NO_UNITS
+    units: i64
+    for text, value in zip(texts.later, point):
+        if keyed:
+            w.write(text)
+        keyed = True
+        if isinstance(value, float):  # (most often: the float's own call, not through the union's)
+            units = _float_units(value)
+            if units != _NO_UNITS:
+                _units_into(units, w)
             else:
-                _int_into(value, w)
+                _repr_into(value, w)
+            if i == 0:
+                u0 = units
+            elif i == 1:
+                u1 = units
+            elif i == 2:
+                u2 = units
+        else:
+            _int_into(value, w)
         i += 1
     centre = record.centre
     if centre is not None:  # an arc: its centre and plane
@@ -416,6 +414,7 @@ def _record_into(record: MoveRecord, w: BytesWriter, line_end: bool) -> None:
         w.write(b"null" if plane is None else _word_text(plane))
     f = record.f
     mode = record.feed_mode
+    controlled = record.controlled
     keyed = False  # the controlled point's opening and first key are written (with the feed)
     if f is not None:
         if f is not texts.f:  # (identity: the same object has the same text; an equal one is spelt again)
@@ -438,22 +437,30 @@ def _record_into(record: MoveRecord, w: BytesWriter, line_end: bool) -> None:
             w.write(b"{}")
             w.write(_CLOSE_LINE if line_end else _CLOSE)
             return
-    if skip:
-        if not keyed:
-            w.write(texts.first[0])
-        keyed = False
-        w.write(head)
     i = 0
-    for text, value in zip(texts.first, controlled):
-        if i >= skip:
-            if keyed:
-                keyed = False
+    for text, value, programmed in zip(texts.first, controlled, point):
+        if keyed:
+            keyed = False
+        else:
+            w.write(text)
+        twin = value is programmed  # (the two objects, before ``value`` is read as a float)
+        if isinstance(value, float):
+            units = _NO_UNITS
+            if twin and i < 3:  # (its units known: not unboxed and checked again)
+                if i == 0:
+                    units = u0
+                elif i == 1:
+                    units = u1
+                else:
+                    units = u2
+            if units == _NO_UNITS:
+                units = _float_units(value)
+            if units != _NO_UNITS:
+                _units_into(units, w)
             else:
-                w.write(text)
-            if isinstance(value, float):
-                _float_into(value, w)
-            else:
-                _int_into(value, w)
+                _repr_into(value, w)
+        else:
+            _int_into(value, w)
         i += 1
     if ccentre is not None:
         centre_keys = record.centre_keys
