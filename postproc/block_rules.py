@@ -19,12 +19,14 @@ step (``postproc.lowering.feed_first``), which looks only at the blocks before t
 from __future__ import annotations
 
 import math
+from typing import Final
 
 from mypy_extensions import mypyc_attr
 
 from .context import Context
 from .errors import ProgramError
 from .geometry.arc_end import NEUTRAL_ARC_END, ArcEndRule
+from .geometry.arc_end_math import rule_allows, rule_centre
 from .geometry.arcs import PLACES, centre_from_radius
 from .ir import Block
 
@@ -95,6 +97,8 @@ class ArcError(ProgramError):
 
 
 _CENTRE_LETTERS = {"X": "I", "Y": "J", "Z": "K"}
+_SMALLEST_RADIUS: Final = 10.0 ** -PLACES
+"""A radius below this is none (``arc_centre``): computed once (compiled, the power was a call an arc)."""
 
 
 def arc_centre(s: tuple[float, float], e: tuple[float, float], axes: tuple[str, str], radius: float | None,
@@ -115,15 +119,16 @@ def arc_centre(s: tuple[float, float], e: tuple[float, float], axes: tuple[str, 
     r0 = math.hypot(s[0] - c[0], s[1] - c[1])
     r1 = math.hypot(e[0] - c[0], e[1] - c[1])
     chord = math.hypot(e[0] - s[0], e[1] - s[1]) / unit
-    if not rule.allows(r0 / unit, r1 / unit, inch, chord):
+    if not rule_allows(rule, r0 / unit, r1 / unit, inch, chord):  # (``rule.allows``, ``rule.centre``: called compiled,
+        # not through the interpreted record's methods, ~500 instructions each an arc)
         letter = next((_CENTRE_LETTERS[a] for a in offsets if a in _CENTRE_LETTERS), "G")  # (only for the error)
         limit = rule.limit(r0 / unit, r1 / unit, inch, chord)
         accepts = "a move of the centre" if rule.of_centre_shift else "a difference"
         raise ArcError(f"arc end point is not on the circle: radius {r0:.4f} mm at the start, "
                        f"{r1:.4f} mm at the end (the controller accepts {accepts} up to "
                        f"{limit:.6g} {'in' if inch else 'mm'} here)", letter)
-    if r0 < 10.0 ** -PLACES:
+    if r0 < _SMALLEST_RADIUS:
         if round(e[0], PLACES) == round(s[0], PLACES) and round(e[1], PLACES) == round(s[1], PLACES):
             return None
         raise ArcError("arc centre coincides with its start point", "G")
-    return rule.centre(s, e, c)
+    return rule_centre(rule, s, e, c)

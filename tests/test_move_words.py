@@ -217,3 +217,47 @@ def test_the_modal_states_plain_move_is_its_general_move(machine: frozenset[str]
         runs.append(seen)
     assert runs[0] == runs[2]
     assert runs[1] == runs[2]
+
+
+sim_axes = st.dictionaries(st.sampled_from(["X", "Y", "Z", "A"]), st.one_of(
+    st.floats(-1e4, 1e4, allow_nan=False), st.integers(-5, 5)), max_size=4)
+
+
+@given(st.sampled_from(["XYZ", "XZ", "XY", "XYZA", "ZYX", "YZA"]),
+       st.lists(st.tuples(sim_axes, st.booleans(), st.sampled_from(["mm", "inch"]), st.booleans(), st.booleans(),
+                          st.booleans()), min_size=1, max_size=8))
+@example("XYZ", [({"X": 1.5, "Z": -2.25}, True, "mm", False, False, False)])
+@example("XZ", [({"X": 1.5, "Y": -2.25}, True, "mm", False, False, False)])
+def test_the_simulators_target_of_a_read_move_is_its_general_target(
+        machine: str, moves: list[tuple[dict[str, float | int], bool, str, bool, bool, bool]]) -> None:
+    """``Position.target`` takes a move the run's ``MoveWords`` read last (the modal state's read, keyed on the
+    move's dictionary) from its X, Y and Z words; any other move by its look-ups. On random machines, moves,
+    units, distance modes, work shifts and machine moves, both give the same point, each value the same object
+    (a word's own float where the general loop stores it), or refuse the move with the same message: the read
+    move's target against the same simulator's with a fresh (unread) ``MoveWords``. The test fails with the
+    read's machine check (``xyz_bits``) or its mode checks taken out."""
+    from postproc.errors import ProgramError
+    from postproc.simulate.simulator import Simulator
+
+    setup = MachineSetup()
+    setup.machine.axes = machine
+    sim = Simulator(Context("t.nc", setup, Diagnostics(ErrorLevel.IMMEDIATE), "fanuc"))
+    block = Block(1, "G1", "\n")
+    for given, read_it, units, incremental, shifted, machine_move in moves:
+        sim.set_scale(25.4 if units == "inch" else 1.0)
+        sim.incremental = incremental
+        sim.shift = {"X": 2.5} if shifted else {}
+        motion = Motion("linear", dict(given))
+        got = []
+        for fresh in (False, True):
+            if fresh:
+                sim.ctx.move_words = MoveWords()
+            elif read_it:
+                sim.ctx.move_words.read(motion)
+            try:
+                out = sim.target(block, motion.axes, False, machine_move)
+                got.append(([(type(v), v) for v in out], [any(v is w for w in given.values()) for v in out]))
+            except ProgramError as err:
+                got.append((str(err), []))
+        assert got[0] == got[1]
+        sim.at = [float(v) for v in sim.at]

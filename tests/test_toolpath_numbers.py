@@ -339,3 +339,33 @@ def test_write_lines_writes_records_as_json_writes_their_events(records: list[Mo
     assert "".join(written) == "".join(_json(r.event()) + "\n" for r in records)
     for r in records:
         assert event_text(r, ENCODER) == _json(r.event())
+
+
+RECORD_NUMBERS = st.one_of(st.integers(-10**6, 10**6).map(lambda n: n / 1e4), st.integers(-500, 500),
+                           st.floats(-1e9, 1e9, allow_nan=False))
+
+
+@settings(max_examples=500, deadline=None)
+@given(keys=st.sampled_from([("x", "y", "z"), ("x", "z"), ("x", "y", "z", "a"), ("x",), ()]),
+       data=st.data(), twins=st.lists(st.booleans(), min_size=4, max_size=4),
+       f=st.one_of(st.none(), st.just(1500), st.just(250.5)), mode=st.sampled_from([None, None, "per_rev"]),
+       arc=st.booleans(), controlled=st.booleans())
+def test_a_record_writes_what_json_writes_of_its_event(keys: tuple[str, ...], data: st.DataObject,
+                                                       twins: list[bool], f: float | int | None, mode: str | None,
+                                                       arc: bool, controlled: bool) -> None:
+    """``_record_into`` on random records: straight moves and arcs, with or without a feed, a feed mode and a
+    controlled point whose values are the programmed point's own objects on some axes (spelt from the units the
+    programmed ones had) or other numbers: the text json writes of the record's ``event()``."""
+    point: list[float | int] = [data.draw(RECORD_NUMBERS) for _ in keys]
+    ctrl: list[float | int] | None = None
+    if controlled:
+        ctrl = [v if twin else data.draw(RECORD_NUMBERS) for v, twin in zip(point, twins)]
+    centre_keys: tuple[str, ...] = ("cx", "cy", "cz") if arc else ()
+    centre = [data.draw(RECORD_NUMBERS) for _ in centre_keys] if arc else None
+    ccentre = [data.draw(RECORD_NUMBERS) for _ in centre_keys] if arc and ctrl is not None else None
+    record = MoveRecord(9, "cw" if arc else "feed", keys, point, f, mode, ctrl, centre_keys, centre,
+                        "XY" if arc else None, ccentre)
+    assert event_text(record, ENCODER) == _json(record.event())
+    written: list[str] = []
+    write_lines(iter([record, record]), _as_text(written), ENCODER)
+    assert "".join(written) == (_json(record.event()) + "\n") * 2

@@ -18,7 +18,7 @@ import math
 from dataclasses import replace
 from typing import Final
 
-from .arc_end_math import centre_shift, circle_spiral_gap, moved_centre, rule_allows, rule_judged, rule_limit
+from .arc_end_math import centre_shift, circle_spiral_gap, rule_allows, rule_centre, rule_judged, rule_limit
 from ..records import record
 from ..ir.state import MM_PER_INCH
 
@@ -33,6 +33,7 @@ NEAREST_CENTRE: Final = "nearest_centre"
 that puts both end points on one circle, its radius about the mean of the two) and runs that circle. Well
 conditioned where ``START_RADIUS`` is not: near half a turn the move stays about half the difference of radii."""
 RUNS: Final = (SPIRAL, START_RADIUS, NEAREST_CENTRE)
+assert (SPIRAL, NEAREST_CENTRE) == ("spiral", "nearest_centre")  # as ``arc_end_math.rule_centre`` spells them
 
 
 @record(frozen=True)  # every run makes it (dialect.py): a record's methods are not compiled at start
@@ -159,10 +160,8 @@ class ArcEndRule:
     def centre(self, s: tuple[float, float], e: tuple[float, float],
                c: tuple[float, float]) -> tuple[float, float]:
         """The centre the controller turns about for an accepted arc from ``s`` to ``e`` programmed about ``c``
-        (``arc_end_math.moved_centre``)."""
-        if self.runs == SPIRAL:
-            return c
-        return moved_centre(self.runs == NEAREST_CENTRE, s, e, c)
+        (``arc_end_math.rule_centre``)."""
+        return rule_centre(self, s, e, c)
 
 
 UNKNOWN_START_TARGET: Final = "unknown_start_target"

@@ -61,6 +61,16 @@ def rule_allows(rule: ArcEndLimits, r_start: float, r_end: float, inch: bool, ch
     return rule_judged(rule, r_start, r_end, chord) <= rule_limit(rule, r_start, r_end, inch, chord) * (1.0 + 1e-9)
 
 
+def rule_centre(rule: ArcEndLimits, s: tuple[float, float], e: tuple[float, float],
+                c: tuple[float, float]) -> tuple[float, float]:
+    """``ArcEndRule.centre``: the centre the controller turns about for an accepted arc from ``s`` to ``e`` programmed
+    about ``c`` (its own for a spiral, ``arc_end.SPIRAL``; else ``moved_centre``)."""
+    runs = rule.runs
+    if runs == "spiral":
+        return c
+    return moved_centre(runs == "nearest_centre", s, e, c)
+
+
 def moved_centre(nearest: bool, s: tuple[float, float], e: tuple[float, float],
                  c: tuple[float, float]) -> tuple[float, float]:
     """The centre a centre-moving controller turns about for an accepted arc from ``s`` to ``e`` programmed about
